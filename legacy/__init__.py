@@ -1,0 +1,168 @@
+"""Python face of the compiled 1977 FORTRAN (Ali, Appendix B and the IBM SSP routines).
+
+The functions call the cleaned listings in ``legacy/src`` through f2py and return
+numpy arrays, one value per input angle.  Defaults are the values the printed
+programs hold.  Where the listing assigns a single-precision constant (for example
+``CA=0.1963495408``) to a DOUBLE PRECISION variable, the default is that constant
+as REAL*4 holds it, so that the defaults reproduce the printed run bit for bit.
+
+Units: inch, pound-force, second; angles in radians for ``alp`` and degrees for the
+input-angle grid; speed in rpm; ``mass_lbf`` is a weight in lbf (mass = W/g with
+g = 32.178*12 in/s^2, as the listing divides).
+
+Errors: ``ValueError`` for bad parameters (checked here, before FORTRAN sees them),
+``AssemblyError`` when the four-bar (or its cognate) cannot close at some input
+angle, ``SingularPositionError`` when a position gives a non-finite result.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..errors import AssemblyError, SingularPositionError
+from . import _ali1977 as _f
+
+#: Constants as the printed REAL*4 literals hold them (IEEE single here; see D030).
+PI_PRINTED = float(np.float32(3.142857143))
+ALP_SOURCE_PRINTED = float(np.float32(1.762782545))   # source listing: 101 deg (D012)
+ALP_COGNATE_PRINTED = PI_PRINTED / 3.0                # cognate listing: ALP=PI/3.0
+CA_PRINTED = float(np.float32(0.1963495408))          # in^2
+ME_PRINTED = float(np.float32(10000000.0))            # psi
+MI_PRINTED = float(np.float32(0.0030679615))          # in^4
+
+__all__ = ["case1_source", "case1_cognate", "gmtra", "mprd", "loc", "angle_grid"]
+
+
+def angle_grid(step_deg: float) -> int:
+    """Number of input angles 0, step, ..., 360 (360 included when step divides it)."""
+    _positive("step_deg", step_deg)
+    n = int(math.floor(360.0 / step_deg + 1e-9)) + 1
+    if n > 200_000:
+        raise ValueError(f"step_deg={step_deg} gives {n} angles; at most 200000 are allowed")
+    return n
+
+
+def _positive(name: str, value: float) -> float:
+    value = float(value)
+    if not math.isfinite(value) or value <= 0.0:
+        raise ValueError(f"{name} must be a finite positive number, got {value!r}")
+    return value
+
+
+def _finite(name: str, value: float) -> float:
+    value = float(value)
+    if not math.isfinite(value):
+        raise ValueError(f"{name} must be finite, got {value!r}")
+    return value
+
+
+def _check_inputs(lengths, alp, rpm, mass_lbf, area, modulus, inertia, step_deg):
+    for name, value in zip(("l1", "l2", "l3", "l4", "l5"), lengths):
+        _positive(name, value)
+    _finite("alp", alp)
+    _finite("rpm", rpm)
+    if abs(rpm) > 2**31 - 1:
+        raise ValueError(f"rpm={rpm} does not fit the listing's INTEGER speed variable")
+    if _finite("mass_lbf", mass_lbf) < 0:
+        raise ValueError(f"mass_lbf must be >= 0, got {mass_lbf}")
+    _positive("area", area)
+    _positive("modulus", modulus)
+    _positive("inertia", inertia)
+    return angle_grid(step_deg)
+
+
+def _raise_on_status(istat: int, deg: np.ndarray, arrays: dict, program: str) -> None:
+    if istat:
+        raise AssemblyError(f"{program}: the four-bar cannot close (negative discriminant "
+                            "in the closed-form position equations)", float(deg[istat - 1]))
+    for name, values in arrays.items():
+        bad = ~np.isfinite(values)
+        if bad.any():
+            i = int(np.argmax(bad))
+            raise SingularPositionError(f"{program}: non-finite {name}", float(deg[i]))
+
+
+def case1_source(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_SOURCE_PRINTED,
+                 rpm=400.0, mass_lbf=2.0, area=CA_PRINTED, modulus=ME_PRINTED,
+                 inertia=MI_PRINTED, step_deg=20.0) -> dict[str, np.ndarray]:
+    """Run the Case I source four-bar program (Appendix B, first listing).
+
+    Returns ``deg`` (input angle, deg), ``xp, yp`` (coupler point with the listing's
+    ALP, in), ``dx, dy`` (elastic deflection of the coupler point, in) and ``rot``
+    (its elastic rotation, rad).  Defaults are the listing's: 400 rpm, ALP=101 deg.
+    Note that the listing truncates ``rpm`` to an INTEGER (``N=SPEED``).
+    """
+    n = _check_inputs((l1, l2, l3, l4, l5), alp, rpm, mass_lbf, area, modulus, inertia, step_deg)
+    deg, xp, yp, dx, dy, rot, istat = _f.ked1s(l1, l2, l3, l4, l5, alp, rpm, mass_lbf,
+                                               area, modulus, inertia, step_deg, n)
+    out = {"deg": deg, "xp": xp, "yp": yp, "dx": dx, "dy": dy, "rot": rot}
+    _raise_on_status(istat, deg, {k: v for k, v in out.items() if k != "deg"}, "KED1S")
+    return out
+
+
+def case1_cognate(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_PRINTED,
+                  rpm=300.0, mass_lbf=2.0, area=CA_PRINTED, modulus=ME_PRINTED,
+                  inertia=MI_PRINTED, step_deg=20.0) -> dict[str, np.ndarray]:
+    """Run the Case I crossed-cognate program (Appendix B, second listing).
+
+    The lengths and ``alp`` are the *source* four-bar's; the program derives the
+    cognate from them.  Returns ``deg``, ``xp, yp`` (source coupler point with this
+    listing's ALP=PI/3, in: the rigid-mode columns of Table I), ``cxp, cyp`` (the
+    cognate's own coupler point after the listing's rotation into place, in),
+    ``dx, dy`` (cognate deflections, in) and ``rot`` (rad).  Default speed 300 rpm.
+    """
+    n = _check_inputs((l1, l2, l3, l4, l5), alp, rpm, mass_lbf, area, modulus, inertia, step_deg)
+    deg, xp, yp, cxp, cyp, dx, dy, rot, istat = _f.ked1c(
+        l1, l2, l3, l4, l5, alp, rpm, mass_lbf, area, modulus, inertia, step_deg, n)
+    out = {"deg": deg, "xp": xp, "yp": yp, "cxp": cxp, "cyp": cyp, "dx": dx, "dy": dy, "rot": rot}
+    _raise_on_status(istat, deg, {k: v for k, v in out.items() if k != "deg"}, "KED1C")
+    return out
+
+
+def gmtra(a: np.ndarray) -> np.ndarray:
+    """SSP GMTRA: transpose an N x M general matrix (REAL*4, column-major storage)."""
+    a = np.asarray(a, dtype=np.float32)
+    if a.ndim != 2 or a.size == 0:
+        raise ValueError("gmtra needs a non-empty 2-D matrix")
+    n, m = a.shape
+    r = _f.gmtra(a.ravel(order="F"), n, m)
+    return r.reshape((m, n), order="F")
+
+
+def _storage_length(n: int, mode: int) -> int:
+    return {0: n * n, 1: n * (n + 1) // 2, 2: n}[mode]
+
+
+def mprd(a: np.ndarray, b: np.ndarray, n: int, m: int, l: int, msa: int = 0, msb: int = 0) -> np.ndarray:
+    """SSP MPRD: R (N x L) = A (N x M) times B (M x L), each in SSP storage.
+
+    ``a`` and ``b`` are the *storage vectors* as SSP keeps them: general (mode 0,
+    column-major N*M), symmetric (mode 1, upper triangle by columns, N*(N+1)/2) or
+    diagonal (mode 2, N elements).  Symmetric and diagonal matrices are square.
+    Returns R as a general N x L matrix, or its N diagonal elements when both
+    inputs are diagonal (the SSP table in the listing's header).
+    """
+    for name, v in (("n", n), ("m", m), ("l", l)):
+        if int(v) < 1:
+            raise ValueError(f"{name} must be >= 1, got {v}")
+    if msa not in (0, 1, 2) or msb not in (0, 1, 2):
+        raise ValueError("storage modes must be 0 (general), 1 (symmetric) or 2 (diagonal)")
+    if msa and n != m:
+        raise ValueError("a symmetric or diagonal A must be square (n == m)")
+    if msb and m != l:
+        raise ValueError("a symmetric or diagonal B must be square (m == l)")
+    a = np.asarray(a, dtype=np.float32).ravel()
+    b = np.asarray(b, dtype=np.float32).ravel()
+    need_a = n * m if msa == 0 else _storage_length(n, msa)
+    need_b = m * l if msb == 0 else _storage_length(m, msb)
+    if a.size != need_a or b.size != need_b:
+        raise ValueError(f"storage vectors must hold {need_a} (A) and {need_b} (B) elements, "
+                         f"got {a.size} and {b.size}")
+    r = _f.mprd(a, b, n, m, msa, msb, l)
+    return r if (msa == 2 and msb == 2) else r.reshape((n, l), order="F")
+
+
+def loc(i: int, j: int, n: int, m: int, ms: int) -> int:
+    """SSP LOC: 1-based storage subscript of element (i, j); 0 when not stored."""
+    return int(_f.loc(i, j, n, m, ms))
