@@ -1,1 +1,11 @@
-"""stub"""
+"""The clean Python port: numpy, vectorised over input angles.
+
+``quirks=PRINTED`` reproduces the legacy FORTRAN; ``quirks=CORRECTED`` removes
+every registered bug of the original.  See ``quirks.Quirks`` for the switches.
+"""
+from .fourbar import Cognate, Lengths
+from .ked_case1 import EXAMPLE, Section, cognate_case1, source_case1
+from .quirks import CORRECTED, PRINTED, Quirks
+
+__all__ = ["CORRECTED", "PRINTED", "Quirks", "Lengths", "Section", "Cognate", "EXAMPLE",
+           "source_case1", "cognate_case1"]

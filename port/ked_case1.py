@@ -1,1 +1,274 @@
-"""stub"""
+"""Case I of Ali (1977): lumped mass at the path point, flexibility method.
+
+delta = beta^T F beta P  (eq. 6), for the source four-bar (eqs. 9-18) and its
+crossed coupler cognate (eqs. 19-28), with the 8x8 element flexibility F of
+eq. (29) and the inertia load P of the path-point mass.
+
+Units: inch, pound-force, second; ``alp`` in radians; input angles ``deg`` in
+degrees; ``rpm`` in rev/min; ``mass_lbf`` a weight in lbf (mass = W/g,
+g = 32.178*12 in/s^2 as the listings divide).  Deflections come out in inches,
+rotations in radians.  Everything is vectorised over the input angles.
+
+With ``quirks=PRINTED`` the formulas, the order of operations and the REAL*4
+storage are the listings', and the results equal the legacy build's.  Each
+quirk switched off removes one bug of the original (see ``quirks.py``).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .fourbar import Cognate, Lengths, check_finite, freudenstein_constants, half_angle_positions
+from .quirks import CORRECTED, PRINTED, Quirks
+from .real4 import product, store
+
+#: The listings' PI=3.142857143 (22/7) as the REAL*4 literal holds it (D011).
+PI_22_7 = float(np.float32(3.142857143))
+#: The source listing's ALP=1.762782545 rad (101 deg) as REAL*4 holds it (D012).
+ALP_SOURCE_LISTING = float(np.float32(1.762782545))
+#: g in in/s^2 as the listings write it (12.0*32.178).
+GRAVITY_IN = 12.0 * 32.178
+
+__all__ = ["Section", "EXAMPLE", "source_case1", "cognate_case1", "PRINTED", "CORRECTED", "Quirks"]
+
+
+@dataclass(frozen=True)
+class Section:
+    """Uniform cross-section of every link: area (in^2), Young's modulus (psi),
+    second moment of area (in^4)."""
+    area: float
+    modulus: float
+    inertia: float
+
+    def __post_init__(self):
+        for name in ("area", "modulus", "inertia"):
+            value = float(getattr(self, name))
+            if not np.isfinite(value) or value <= 0.0:
+                raise ValueError(f"section {name} must be finite and positive, got {value!r}")
+
+    def as_listing_holds(self, real4: bool) -> "Section":
+        """The listing assigns REAL*4 literals to its DOUBLE section variables."""
+        if not real4:
+            return self
+        return Section(*(float(np.float32(v)) for v in (self.area, self.modulus, self.inertia)))
+
+
+@dataclass(frozen=True)
+class Example:
+    """Chapter IV, "Data for Numerical Example" (and the listings' constants)."""
+    lengths: Lengths = Lengths(10.0, 10.0, 30.0, 25.0, 30.0)
+    alpha_deg: float = 60.0
+    rpm: float = 300.0
+    mass_lbf: float = 2.0
+    section: Section = Section(0.1963495408, 10000000.0, 0.0030679615)
+
+
+EXAMPLE = Example()
+
+
+def _pi(quirks: Quirks) -> float:
+    return PI_22_7 if quirks.pi_22_7 else np.pi
+
+
+def input_angles(deg, quirks: Quirks) -> np.ndarray:
+    """T2 (rad) as the listings form it: (P2*2.0*PI)/360.0."""
+    deg = np.atleast_1d(np.asarray(deg, dtype=np.float64))
+    if not np.all(np.isfinite(deg)):
+        raise ValueError("input angles must be finite")
+    return (deg * 2.0 * _pi(quirks)) / 360.0
+
+
+def inertia_load(acc_x, acc_y, mass_lbf, quirks: Quirks):
+    """System forces P1, P2 (lbf) of a point mass of weight ``mass_lbf`` with
+    acceleration (acc_x, acc_y) in/s^2; P3 = 0 (no rotary inertia).
+
+    The listings store the acceleration and the force in REAL*4 and use +m*a;
+    the inertia (d'Alembert) force is -m*a (D018).
+    """
+    real4 = quirks.real4_storage
+    sign = 1.0 if quirks.inertia_sign else -1.0
+    ax, ay = store(acc_x, real4), store(acc_y, real4)
+    if real4:
+        m, g = np.float32(mass_lbf), np.float32(12.0) * np.float32(32.178)
+    else:
+        m, g = float(mass_lbf), GRAVITY_IN
+    zero = np.zeros_like(ax)
+    return np.stack([sign * (ax * m / g), sign * (ay * m / g), zero], axis=-1)
+
+
+def flexibility(l_ext, l_in, l_cpl, l_fol, section: Section, quirks: Quirks) -> np.ndarray:
+    """Element flexibility F (8x8) of eq. (29): extender (axial; bending 2x2),
+    input link (axial, bending), follower (axial), coupler (axial, end moment)."""
+    ca, me, mi = section.area, section.modulus, section.inertia
+    f = np.zeros((8, 8))
+    f[0, 0] = l_ext / (ca * me)
+    f[1, 1] = (l_ext * l_ext * l_ext) / (3.0 * me * mi)
+    f[2, 1] = f[1, 2] = (l_ext * l_ext) / (2.0 * me * mi)
+    f[2, 2] = l_ext / (me * mi)
+    f[3, 3] = l_in / (ca * me)
+    bending = ca if quirks.input_link_bending_area else mi          # D016
+    f[4, 4] = (l_in * l_in * l_in) / (3.0 * bending * me)
+    f[5, 5] = l_fol / (ca * me)
+    f[6, 6] = l_cpl / (ca * me)
+    f[7, 7] = l_cpl / (3.0 * me * mi)
+    return store(f, quirks.real4_storage)
+
+
+def deflection(beta: np.ndarray, flex: np.ndarray, load: np.ndarray, quirks: Quirks) -> np.ndarray:
+    """delta = beta^T F beta P, per angle; in the listings' MPRD order and precision."""
+    real4 = quirks.real4_storage
+    beta = store(beta, real4)
+    left = product(np.swapaxes(beta, -1, -2), flex, real4)       # CALL GMTRA; MPRD(A,B,R,3,8,..,8)
+    left = product(left, beta, real4)                            # MPRD(A,B,R,3,8,..,3)
+    return product(left, load[..., :, None], real4)[..., 0]      # MPRD(A,B,R,3,3,..,1)
+
+
+def _three_by_three_inverse_rows(a, b, c, d, e, f, g, h, i):
+    """Rows f4, f5, f6 of beta by Cramer's rule (eq. 14), in the listing's order."""
+    r = (a * (e * i - f * h)) - (b * (d * i - f * g)) + (c * (d * h - e * g))
+    return np.stack([
+        np.stack([((e * i) - (f * h)) / r, ((c * h) - (b * i)) / r, ((b * f) - (c * e)) / r], -1),
+        np.stack([((f * g) - (d * i)) / r, ((a * i) - (c * g)) / r, ((c * d) - (a * f)) / r], -1),
+        np.stack([((d * h) - (e * g)) / r, ((b * g) - (a * h)) / r, ((a * e) - (b * d)) / r], -1),
+    ], axis=-2)
+
+
+def source_case1(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = None,
+                 rpm: float | None = None, mass_lbf: float = 2.0,
+                 section: Section = EXAMPLE.section, quirks: Quirks = PRINTED) -> dict:
+    """Case I, source four-bar: coupler point (in) and its elastic deflection.
+
+    ``alp`` (rad) and ``rpm`` default to the example data (60 deg, 300 rpm), or
+    to the listing's 101 deg and 400 rpm where the quirks D012 and D017 are on.
+    Returns arrays ``xp, yp, dx, dy`` (in) and ``rot`` (rad) over ``deg``.
+    """
+    deg = np.atleast_1d(np.asarray(deg, dtype=np.float64))
+    real4 = quirks.real4_storage
+    pi = _pi(quirks)
+    if alp is None:
+        alp = ALP_SOURCE_LISTING if quirks.source_alpha_101 else pi / 3.0
+    if rpm is None:
+        rpm = 400.0 if quirks.source_rpm_400 else EXAMPLE.rpm
+    if not np.isfinite(rpm) or not np.isfinite(alp) or not np.isfinite(mass_lbf):
+        raise ValueError("alp, rpm and mass_lbf must be finite")
+    if real4:
+        rpm = float(np.trunc(rpm))          # the listing's speed variable N is INTEGER
+    l1, l2, l3, l4, l5 = lengths.l1, lengths.l2, lengths.l3, lengths.l4, lengths.l5
+    section = section.as_listing_holds(real4)
+
+    t2 = input_angles(deg, quirks)
+    t3, t4 = half_angle_positions(t2, freudenstein_constants(l1, l3, l4, l5), deg, "source")
+    om2 = (2.0 * pi * rpm) / 60.0
+    with np.errstate(divide="ignore", invalid="ignore"):
+        ctx = np.cos(t4 - t3) / np.sin(t4 - t3)
+        xp = (l1 * np.cos(t2)) + (l2 * np.cos(alp + t3))
+        yp = (l1 * np.sin(t2)) + (l2 * np.sin(alp + t3))
+        om3 = (l1 * om2 * np.sin(t4 - t3 if quirks.omega3_sign else t4 - t2)) / (l3 * np.sin(t3 - t4))
+        om4 = (l1 * om2 * np.sin(t2 - t3)) / (l4 * np.sin(t4 - t3))
+        aj, bj = l4 * np.sin(t4), l3 * np.sin(t3)
+        cj = (l1 * om2 * om2 * np.cos(t2)) + (l3 * om3 * om3 * np.cos(t3)) - (l4 * om4 * om4 * np.cos(t4))
+        dj, ej = l4 * np.cos(t4), l3 * np.cos(t3)
+        fj = (l4 * om4 * om4 * np.sin(t4)) - (l1 * om2 * om2 * np.sin(t2)) - (l3 * om3 * om3 * np.sin(t3))
+        alph3 = (cj * dj - aj * fj) / (aj * ej - bj * dj)           # input speed constant: ALPH2 = 0
+        xpa = -(l1 * om2 * om2 * np.cos(t2)) - (l2 * om3 * om3 * np.cos(alp + t3)) - (l2 * alph3 * np.sin(alp + t3))
+        ypa = -(l1 * om2 * om2 * np.sin(t2)) + (l2 * alph3 * np.cos(alp + t3)) - (l2 * om3 * om3 * np.sin(alp + t3))
+
+        # Coupler equilibrium, eqs. (10)-(13): P = [a b c; d e f; g h i] (f4, f5, f6).
+        g_trig = np.cos(t2) if quirks.g_coefficient else np.sin(t2)                   # D014
+        g1 = -(l2 * np.cos(alp + t3) * g_trig) + (l2 * np.sin(alp + t3) * np.cos(t2))
+        h1 = -(l2 * np.cos(alp + t3) * np.cos(t2)) - (l2 * np.sin(alp + t3) * np.sin(t2))
+        i_len = l2 if quirks.i_coefficient else l3                                    # D015
+        i1 = np.sin(t4) * ((i_len * np.cos(t3)) - (l2 * np.cos(alp + t3))) \
+            + np.cos(t4) * ((l2 * np.sin(alp + t3)) - (l3 * np.sin(t3)))
+        rows456 = _three_by_three_inverse_rows(np.cos(t2), -np.sin(t2), np.cos(t4), np.sin(t2),
+                                               np.cos(t2), np.sin(t4), g1, h1, i1)
+        s, c = np.sin(t3 + alp), np.cos(t3 + alp)
+        zero, one = np.zeros_like(t2), np.ones_like(t2)
+        beta = np.concatenate([
+            np.stack([np.stack([c, s, zero], -1), np.stack([-s, c, zero], -1),
+                      np.stack([zero, zero, one], -1)], -2),
+            rows456,
+            np.stack([np.stack([ctx * s * (l2 / l3), -c * ctx * (l2 / l3), -ctx / l3], -1),
+                      np.stack([-s * l2, c * l2, one], -1)], -2),
+        ], axis=-2)
+    load = inertia_load(xpa, ypa, mass_lbf, quirks)
+    delta = deflection(beta, flexibility(l2, l1, l3, l4, section, quirks), load, quirks)
+    out = {"xp": xp, "yp": yp, "dx": delta[:, 0].astype(np.float64),
+           "dy": delta[:, 1].astype(np.float64), "rot": delta[:, 2].astype(np.float64)}
+    check_finite(deg, "source", **out)
+    return out
+
+
+def cognate_case1(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = None,
+                  rpm: float = EXAMPLE.rpm, mass_lbf: float = 2.0,
+                  section: Section = EXAMPLE.section, quirks: Quirks = PRINTED) -> dict:
+    """Case I, crossed coupler cognate of the source four-bar (``lengths``, ``alp``).
+
+    Returns ``xp, yp`` (the source's coupler point, as the cognate listing computes
+    it: the rigid-mode columns of Table I), ``cxp, cyp`` (the cognate's coupler
+    point turned into the source frame), ``dx, dy`` (in) and ``rot`` (rad).
+    """
+    deg = np.atleast_1d(np.asarray(deg, dtype=np.float64))
+    real4 = quirks.real4_storage
+    pi = _pi(quirks)
+    if alp is None:
+        alp = pi / 3.0
+    if not np.isfinite(rpm) or not np.isfinite(alp) or not np.isfinite(mass_lbf):
+        raise ValueError("alp, rpm and mass_lbf must be finite")
+    speed = float(np.float32(rpm)) if real4 else float(rpm)       # S is REAL*4 in the listing
+    l1, l2, l3, l4, l5 = lengths.l1, lengths.l2, lengths.l3, lengths.l4, lengths.l5
+    section = section.as_listing_holds(real4)
+
+    t2 = input_angles(deg, quirks)
+    t3, _ = half_angle_positions(t2, freudenstein_constants(l1, l3, l4, l5), deg, "source")
+    xp = (l1 * np.cos(t2)) + (l2 * np.cos(alp + t3))
+    yp = (l1 * np.sin(t2)) + (l2 * np.sin(alp + t3))
+
+    cog = Cognate.of(lengths, alp, pi)
+    cl1, cl2, cl3, cl4, cl5 = cog.cl1, cog.cl2, cog.cl3, cog.cl4, cog.cl5
+    ct3, ct4 = half_angle_positions(t2, cog.constants(), deg, "cognate")
+    gam = cog.calp - ct3
+    xpp = (cl1 * np.cos(t2)) + (cl2 * np.cos(pi - (cog.calp - ct3)))
+    ypp = (cl1 * np.sin(t2)) + (cl2 * np.sin(pi - (cog.calp - ct3)))
+    om2 = (2.0 * pi * speed) / 60.0
+    with np.errstate(divide="ignore", invalid="ignore"):
+        om3 = (cl1 * om2 * np.sin(t2 - ct4)) / (cl3 * np.sin(ct3 - ct4))
+        om4 = (cl1 * om2 * np.sin(ct3 - t2)) / (cl4 * np.sin(ct4 - ct3))
+        aj, bj = cl4 * np.sin(ct4), cl3 * np.sin(ct3)
+        cj = -(cl1 * om2 * om2 * np.cos(t2)) + (cl3 * om3 * om3 * np.cos(ct3)) - (cl4 * om4 * om4 * np.cos(ct4))
+        dj, ej = cl4 * np.cos(ct4), cl3 * np.cos(ct3)
+        fj = (cl1 * om2 * om2 * np.sin(t2)) - (cl3 * om3 * om3 * np.sin(ct3)) + (cl4 * om4 * om4 * np.sin(ct4))
+        alph3 = (cj * dj - aj * fj) / (aj * ej - bj * dj)
+        xpa = -(cl1 * om2 * om2 * np.cos(t2)) + (cl2 * om3 * om3 * np.cos(gam)) - (cl2 * alph3 * np.sin(gam))
+        ypa = -(cl1 * om2 * om2 * np.sin(t2)) - (cl2 * om3 * om3 * np.sin(gam)) - (cl2 * alph3 * np.cos(gam))
+
+        # Coupler equilibrium of the crossed cognate, eqs. (20)-(24).
+        g1 = (cl2 * np.cos(t2) * np.sin(gam)) + (cl2 * np.sin(t2) * np.cos(gam))
+        h1 = (cl2 * np.cos(t2) * np.cos(gam)) - (cl2 * np.sin(t2) * np.sin(gam))
+        i1 = (cl2 * np.cos(t2) * np.sin(gam)) + (cl3 * np.cos(ct3) * np.cos(ct4)) \
+            + (cl2 * np.sin(ct4) * np.cos(gam)) + (cl3 * np.sin(ct4) * np.sin(ct3))
+        rows456 = _three_by_three_inverse_rows(-np.cos(t2), np.sin(t2), np.cos(ct4), -np.sin(t2),
+                                               -np.cos(t2), np.sin(ct4), g1, h1, i1)
+        cctx = np.cos(ct3 - ct4) / np.sin(ct3 - ct4)
+        s, c = np.sin(gam), np.cos(gam)
+        zero, one = np.zeros_like(t2), np.ones_like(t2)
+        beta = np.concatenate([
+            np.stack([np.stack([-c, s, zero], -1), np.stack([-s, -c, zero], -1),
+                      np.stack([zero, zero, one], -1)], -2),
+            rows456,
+            np.stack([np.stack([-cl2 * s * cctx / cl3, -cl2 * c * cctx / cl3, cctx / cl3], -1),
+                      np.stack([-cl2 * s, -cl2 * c, one], -1)], -2),
+        ], axis=-2)
+    load = inertia_load(xpa, ypa, mass_lbf, quirks)
+    delta = deflection(beta, flexibility(cl2, cl1, cl3, cl4, section, quirks), load, quirks)
+    dx, dy = delta[:, 0].astype(np.float64), delta[:, 1].astype(np.float64)
+    if not quirks.cognate_frame:                 # D025: turn the deflection into the source frame
+        dx, dy = dx * np.cos(-cog.beta) - dy * np.sin(-cog.beta), dx * np.sin(-cog.beta) + dy * np.cos(-cog.beta)
+    xdp = store(xpp - cl5, real4).astype(np.float64)                      # XDP is REAL*4
+    cxp = store((xdp * np.cos(-cog.beta)) - (ypp * np.sin(-cog.beta)), real4).astype(np.float64) + l5
+    cyp = (xdp * np.sin(-cog.beta)) + (ypp * np.cos(-cog.beta))
+    out = {"xp": xp, "yp": yp, "cxp": cxp, "cyp": cyp, "dx": dx, "dy": dy,
+           "rot": delta[:, 2].astype(np.float64)}
+    check_finite(deg, "cognate", **out)
+    return out

@@ -1,1 +1,37 @@
-"""stub"""
+"""The original programs' bugs, one switch each.
+
+``PRINTED`` turns every quirk on: the port then reproduces the legacy FORTRAN.
+``CORRECTED`` turns them all off: the port computes what the thesis meant.
+Each field names its entry in ``harness/deviations.toml``.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, fields, replace
+
+
+@dataclass(frozen=True)
+class Quirks:
+    pi_22_7: bool = True                 # D011  PI=3.142857143 (22/7) in every listing
+    source_alpha_101: bool = True        # D012  source listing: ALP=1.762782545 (101 deg), not 60 deg
+    omega3_sign: bool = True             # D013  OM3 uses SIN(T4-T3) for SIN(T4-T2)
+    g_coefficient: bool = True           # D014  G1 uses COS(T2) where eq. (18) has SIN(theta2)
+    i_coefficient: bool = True           # D015  I1 uses L2*COS(T3) where eq. (18) has L3
+    input_link_bending_area: bool = True  # D016  F(5,5)=L1^3/(3*A*E), eq. (29) has E*I
+    source_rpm_400: bool = True          # D017  source listing runs at 400 rpm, the data say 300
+    inertia_sign: bool = True            # D018  P = +m*a; the inertia (d'Alembert) force is -m*a
+    real4_storage: bool = True           # D019  matrices and forces stored REAL*4
+    cognate_frame: bool = True           # D025  cognate deflections left in the cognate's own frame
+
+    @classmethod
+    def names(cls) -> list[str]:
+        return [f.name for f in fields(cls)]
+
+    def only(self, name: str, value: bool) -> "Quirks":
+        """A copy with one quirk switched."""
+        if name not in self.names():
+            raise ValueError(f"unknown quirk {name!r}; known: {', '.join(self.names())}")
+        return replace(self, **{name: value})
+
+
+PRINTED = Quirks()
+CORRECTED = Quirks(**{name: False for name in Quirks.names()})
