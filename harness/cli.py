@@ -1,1 +1,45 @@
-"""stub"""
+"""The ``linkrepro`` command."""
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(prog="linkrepro", description=(
+        "Rebuild, port and diff the FORTRAN of three mechanism-dynamics theses."))
+    sub = parser.add_subparsers(dest="command", required=True)
+    rep = sub.add_parser("reproduce", help="run every engine of the scenes and write the report")
+    rep.add_argument("scenes", nargs="*", help="scene names (default: all; see `linkrepro scenes`)")
+    rep.add_argument("--out", default="out", type=Path, help="output folder (default: out/)")
+    sub.add_parser("scenes", help="list the scenes")
+    bench = sub.add_parser("bench", help="time each engine against its error")
+    bench.add_argument("--repeat", type=int, default=20, help="timing repetitions (best of)")
+    args = parser.parse_args(argv)
+
+    from .scenes import SCENES
+    if args.command == "scenes":
+        for scene in SCENES.values():
+            print(f"{scene.name:20s} {scene.title}")
+        return 0
+    if args.command == "reproduce":
+        from .run import reproduce, unexplained_count
+        unknown = [s for s in args.scenes if s not in SCENES]
+        if unknown:
+            parser.error(f"unknown scene(s): {', '.join(unknown)}; known: {', '.join(SCENES)}")
+        done = reproduce(args.scenes, args.out)
+        for item in done:
+            print(f"{item['scene']}:")
+            print(item["counts"].to_string())
+        print(f"report: {args.out / 'report.md'}  ({unexplained_count(done)} unexplained cells)")
+        return 0
+    if args.command == "bench":
+        from .bench import run_bench
+        print(run_bench(args.repeat))
+        return 0
+    return 2
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,1 +1,95 @@
-"""stub"""
+"""Write a scene's results: CSVs in the published table's columns, diff.csv,
+plots and report.md; and the summary report over all scenes."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import pandas as pd  # noqa: E402
+
+from .diff import column_max, summary  # noqa: E402
+from .register import Deviation  # noqa: E402
+
+STYLE = {"printed": dict(marker="x", ls="none", color="tab:gray"),
+         "legacy": dict(ls="-", color="tab:blue"),
+         "port_printed": dict(ls="--", color="tab:orange"),
+         "port_corrected": dict(ls="-", color="tab:green", alpha=0.8)}
+
+
+def _md_table(frame: pd.DataFrame, floatfmt: str = "{:.3g}") -> str:
+    cols = [str(c) for c in frame.columns]
+    head = "| " + " | ".join([frame.index.name or ""] + cols) + " |"
+    rule = "|" + "---|" * (len(cols) + 1)
+    lines = [head, rule]
+    for idx, row in frame.iterrows():
+        cells = [floatfmt.format(v) if isinstance(v, float) else str(v) for v in row]
+        lines.append("| " + " | ".join([str(idx)] + cells) + " |")
+    return "\n".join(lines)
+
+
+def plot_scene(scene, published, results: dict[str, pd.DataFrame], outdir: Path) -> list[Path]:
+    """One PNG per quantity: published points and every engine against the key column."""
+    pub = published.values
+    paths = []
+    for col in scene.columns:
+        if col == scene.key:
+            continue
+        fig, ax = plt.subplots(figsize=(6.4, 3.6))
+        ax.plot(pub[scene.key], pub[col], "ko", ms=4, label="published")
+        for engine, frame in results.items():
+            if frame[col].notna().any():
+                ax.plot(frame[scene.key], frame[col], label=engine, **STYLE.get(engine, {}))
+        ax.set_xlabel(scene.key)
+        ax.set_ylabel(f"{col} (in)")
+        ax.set_title(f"{scene.name}: {col}", fontsize=10)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7)
+        fig.tight_layout()
+        path = outdir / f"{col}.png"
+        fig.savefig(path, dpi=90)
+        plt.close(fig)
+        paths.append(path)
+    return paths
+
+
+def render_entry(entry: Deviation) -> str:
+    lines = [f"#### {entry.id} ({entry.kind}{', ' + entry.certainty if entry.certainty else ''}): {entry.title}",
+             f"- where: {entry.where}", f"- printed: `{entry.printed}`", f"- meant: `{entry.meant}`",
+             f"- evidence: {entry.evidence}", f"- effect: {entry.effect}"]
+    if entry.quirk:
+        lines.append(f"- port quirk: `{entry.quirk}`")
+    return "\n".join(lines)
+
+
+def scene_report(scene, diff: pd.DataFrame, timings: dict[str, float], register: dict[str, Deviation],
+                 plots: list[Path], extra: str = "") -> str:
+    counts = summary(diff)
+    ids = sorted({i for s in diff["register_ids"] for i in s.split()})
+    unexplained = diff[diff["status"] == "unexplained"]
+    out = [f"# {scene.title}", "", f"Scene `{scene.name}`; published table `harness/published/{scene.table}.csv`.",
+           "", f"**Inputs.** {scene.inputs}", ""]
+    out += [f"- {n}" for n in scene.notes]
+    out += ["", "## Cells against the published table",
+            "", "A cell matches when it is within half a unit of the printed last digit.", "",
+            _md_table(counts, "{}"), "",
+            "## Largest |engine - published| per column (over produced cells)", "",
+            _md_table(column_max(diff, "abs_diff")), "",
+            "## Largest |engine - legacy| per column", "",
+            _md_table(column_max(diff, "diff_vs_legacy"), "{:.2e}"), "",
+            "## Wall time per engine (s, this run)", "",
+            "| engine | seconds |", "|---|---|"]
+    out += [f"| {k} | {v:.4f} |" for k, v in timings.items()]
+    out += ["", "## Unexplained cells", ""]
+    if unexplained.empty:
+        out.append("None.")
+    else:
+        out.append(_md_table(unexplained.set_index("engine")[[scene.key, "column", "published_text", "value"]],
+                             "{:.6g}"))
+    if extra:
+        out += ["", extra]
+    out += ["", "## Plots", ""] + [f"![{p.stem}]({p.name})" for p in plots]
+    out += ["", "## Register entries involved", ""] + [render_entry(register[i]) + "\n" for i in ids if i in register]
+    return "\n".join(out) + "\n"

@@ -70,6 +70,7 @@ C *
 C  N---- THE SPEED OF ROTATION OF THE INPUT LINK.
       N=400.0
       OM2=(2.0*PI*N)/60.0
+      WRITE(6,100)
   100 FORMAT (1H1,9X,' DEGREES',13X,' X-DISP. OF P',3X,' Y-DISP. OF P',
      *10X,' Z-ROT. OF P')
       P2=-10.0

@@ -74,6 +74,7 @@ C     L5=30.0                                                            ! D040
 C  N---- THE SPEED OF ROTATION OF THE INPUT LINK.
       N=SPEED                                                            ! D040
       OM2=(2.0*PI*N)/60.0
+C     WRITE(6,100)                                                       ! D041
   100 FORMAT (1H1,9X,' DEGREES',13X,' X-DISP. OF P',3X,' Y-DISP. OF P',
      *10X,' Z-ROT. OF P')
       P2=-DSTEP                                                          ! D040

@@ -1,0 +1,108 @@
+"""Measure the literal scan text against the chosen reading.
+
+For every register entry with ``[[deviation.reading]]`` items, the printed
+listing is rebuilt with the scan's literal text put back, compiled with gfortran
+like the printed engine, run, and its deflection columns compared with the
+published table.  This is the measured evidence behind each uncertain reading.
+Needs gfortran on PATH; without it the measurement is skipped and says so.
+"""
+from __future__ import annotations
+
+import shutil
+import subprocess
+import tempfile
+import tomllib
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from .published_tables import PublishedTable
+from .register import REGISTER_PATH
+
+PRINTED_DIR = Path(__file__).resolve().parent.parent / "legacy" / "printed"
+FLAGS = ["-std=legacy", "-fno-automatic", "-ffp-contract=off", "-fno-fast-math", "-O1"]
+#: which published columns each printed program's WRITE gives
+COLUMNS = {"ali1977_case1_source.f": ("src_dx", "src_dy"), "ali1977_case1_cognate.f": ("cog_dx", "cog_dy")}
+SSP = ["ssp_gmtra.f", "ssp_mprd.f", "ssp_loc.f"]
+
+
+def _printed_dir() -> Path | None:
+    """The listings ship with the source tree; an installed package may lack them."""
+    return PRINTED_DIR if PRINTED_DIR.is_dir() else None
+
+
+def _run_variant(program: str, edits: list[dict], workdir: Path) -> pd.DataFrame:
+    text = (PRINTED_DIR / program).read_text()
+    for edit in edits:
+        chosen, scan, nth = edit["chosen"], edit["scan"], int(edit.get("occurrence", 1))
+        parts = text.split(chosen + "\n")
+        if len(parts) <= nth:
+            raise ValueError(f"{program}: chosen text {chosen!r} occurs fewer than {nth} times")
+        text = (chosen + "\n").join(parts[:nth]) + scan + "\n" + (chosen + "\n").join(parts[nth:])
+    src = workdir / program
+    src.write_text(text)
+    exe = workdir / "variant"
+    subprocess.run(["gfortran", *FLAGS, "-o", str(exe), str(src), *[str(PRINTED_DIR / s) for s in SSP]],
+                   check=True, capture_output=True, timeout=120)
+    done = subprocess.run([str(exe)], capture_output=True, text=True, timeout=60)
+    rows = [[float(v) for v in line[1:].split()] for line in done.stdout.splitlines()
+            if line[:1] == "0" and len(line[1:].split()) == 4]
+    return pd.DataFrame(rows, columns=["deg", "dx", "dy", "rot"]).drop_duplicates("deg").set_index("deg")
+
+
+def _matched(frame: pd.DataFrame, program: str, published: PublishedTable) -> tuple[int, int, float]:
+    pub, half = published.values, published.half_unit
+    rows = pub["input_deg"] < 360          # row 360 is a copy of row 0 (D011)
+    matched, total, worst = 0, 0, 0.0
+    for col, quantity in zip(COLUMNS[program], ("dx", "dy")):
+        got = frame[quantity].reindex(pub.loc[rows, "input_deg"]).to_numpy()
+        err = np.abs(got - pub.loc[rows, col].to_numpy())
+        err = np.where(np.isnan(err), np.inf, err)
+        matched += int((err <= half.loc[rows, col].to_numpy() * (1 + 1e-9)).sum())
+        total += int(rows.sum())
+        worst = max(worst, float(np.max(err)))
+    return matched, total, worst
+
+
+def measure(table: str = "ali1977_table1") -> pd.DataFrame:
+    """One row per reading: cells matched with the chosen text and with the scan's."""
+    if shutil.which("gfortran") is None or _printed_dir() is None:
+        return pd.DataFrame()
+    with open(REGISTER_PATH, "rb") as fh:
+        entries = tomllib.load(fh).get("deviation", [])
+    published = PublishedTable.load(table)
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        tmp = Path(tmp)
+        baselines = {}
+        for entry in entries:
+            readings = entry.get("reading", [])
+            if not readings:
+                continue
+            program = readings[0]["file"]
+            if program not in baselines:
+                baselines[program] = _matched(_run_variant(program, [], tmp), program, published)
+            try:
+                scan = _matched(_run_variant(program, readings, tmp), program, published)
+            except subprocess.CalledProcessError:
+                scan = (0, baselines[program][1], float("nan"))
+            chosen = baselines[program]
+            rows.append({"id": entry["id"], "program": program,
+                         "chosen_matched": f"{chosen[0]}/{chosen[1]}", "chosen_max_err": chosen[2],
+                         "scan_matched": f"{scan[0]}/{scan[1]}", "scan_max_err": scan[2]})
+    return pd.DataFrame(rows)
+
+
+def as_markdown(frame: pd.DataFrame) -> str:
+    if frame.empty:
+        return ("## Reading alternatives\n\nNot measured (needs gfortran on PATH and the source "
+                "tree's legacy/printed).")
+    lines = ["## Reading alternatives (measured: the printed listing rebuilt with the scan's literal text)",
+             "", "Deflection cells of rows 0-340 within half a unit of the printed digit.", "",
+             "| entry | program | chosen reading | max err | scan's literal text | max err |",
+             "|---|---|---|---|---|---|"]
+    for r in frame.itertuples():
+        lines.append(f"| {r.id} | {r.program} | {r.chosen_matched} | {r.chosen_max_err:.4f} | "
+                     f"{r.scan_matched} | {r.scan_max_err:.4f} |")
+    return "\n".join(lines)
