@@ -15,7 +15,7 @@ quirk switched off removes one bug of the original (see ``quirks.py``).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -30,7 +30,8 @@ ALP_SOURCE_LISTING = float(np.float32(1.762782545))
 #: g in in/s^2 as the listings write it (12.0*32.178).
 GRAVITY_IN = 12.0 * 32.178
 
-__all__ = ["Section", "EXAMPLE", "source_case1", "cognate_case1", "PRINTED", "CORRECTED", "Quirks"]
+__all__ = ["Section", "EXAMPLE", "Mechanics", "source_mechanics", "cognate_mechanics", "case1_deflection",
+           "source_case1", "cognate_case1", "PRINTED", "CORRECTED", "Quirks"]
 
 
 @dataclass(frozen=True)
@@ -134,28 +135,42 @@ def _three_by_three_inverse_rows(a, b, c, d, e, f, g, h, i):
     ], axis=-2)
 
 
-def source_case1(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = None,
-                 rpm: float | None = None, mass_lbf: float = 2.0,
-                 section: Section = EXAMPLE.section, quirks: Quirks = PRINTED) -> dict:
-    """Case I, source four-bar: coupler point (in) and its elastic deflection.
+@dataclass(frozen=True)
+class Mechanics:
+    """One mechanism's Case I state over the input angles, in its own frame.
+
+    ``acc`` (N, 2) is the path point's acceleration (in/s^2) as the listing forms
+    it; ``beta`` (N, 8, 3) the force-transformation matrix; ``flex_lengths`` the
+    (extender, input, coupler, follower) lengths of F; ``frame_angle`` (rad) turns
+    the mechanism's frame into the source's (0 for the source).
+    """
+    xp: np.ndarray
+    yp: np.ndarray
+    acc: np.ndarray
+    beta: np.ndarray
+    flex_lengths: tuple
+    frame_angle: float = 0.0
+    extra: dict = field(default_factory=dict)
+
+
+def source_mechanics(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = None,
+                     rpm: float | None = None, quirks: Quirks = PRINTED) -> Mechanics:
+    """Kinematics and beta of the source four-bar (listing statements 20-106).
 
     ``alp`` (rad) and ``rpm`` default to the example data (60 deg, 300 rpm), or
     to the listing's 101 deg and 400 rpm where the quirks D012 and D017 are on.
-    Returns arrays ``xp, yp, dx, dy`` (in) and ``rot`` (rad) over ``deg``.
     """
     deg = np.atleast_1d(np.asarray(deg, dtype=np.float64))
-    real4 = quirks.real4_storage
     pi = _pi(quirks)
     if alp is None:
         alp = ALP_SOURCE_LISTING if quirks.source_alpha_101 else pi / 3.0
     if rpm is None:
         rpm = 400.0 if quirks.source_rpm_400 else EXAMPLE.rpm
-    if not np.isfinite(rpm) or not np.isfinite(alp) or not np.isfinite(mass_lbf):
-        raise ValueError("alp, rpm and mass_lbf must be finite")
-    if real4:
+    if not np.isfinite(rpm) or not np.isfinite(alp):
+        raise ValueError("alp and rpm must be finite")
+    if quirks.real4_storage:
         rpm = float(np.trunc(rpm))          # the listing's speed variable N is INTEGER
     l1, l2, l3, l4, l5 = lengths.l1, lengths.l2, lengths.l3, lengths.l4, lengths.l5
-    section = section.as_listing_holds(real4)
 
     t2 = input_angles(deg, quirks)
     t3, t4 = half_angle_positions(t2, freudenstein_constants(l1, l3, l4, l5), deg, "source")
@@ -192,33 +207,55 @@ def source_case1(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = No
             np.stack([np.stack([ctx * s * (l2 / l3), -c * ctx * (l2 / l3), -ctx / l3], -1),
                       np.stack([-s * l2, c * l2, one], -1)], -2),
         ], axis=-2)
-    load = inertia_load(xpa, ypa, mass_lbf, quirks)
-    delta = deflection(beta, flexibility(l2, l1, l3, l4, section, quirks), load, quirks)
-    out = {"xp": xp, "yp": yp, "dx": delta[:, 0].astype(np.float64),
-           "dy": delta[:, 1].astype(np.float64), "rot": delta[:, 2].astype(np.float64)}
+    return Mechanics(xp, yp, np.stack([xpa, ypa], -1), beta, (l2, l1, l3, l4),
+                     extra={"t2": t2, "t3": t3, "t4": t4, "om3": om3, "alph3": alph3, "alp": alp})
+
+
+def case1_deflection(mech: Mechanics, mass_lbf: float, section: Section, quirks: Quirks):
+    """dx, dy (in, in the source frame unless D025 is on) and rot (rad) of the path point."""
+    if not np.isfinite(mass_lbf):
+        raise ValueError("mass_lbf must be finite")
+    load = inertia_load(mech.acc[:, 0], mech.acc[:, 1], mass_lbf, quirks)
+    flex = flexibility(*mech.flex_lengths, section.as_listing_holds(quirks.real4_storage), quirks)
+    delta = deflection(mech.beta, flex, load, quirks)
+    dx, dy = delta[:, 0].astype(np.float64), delta[:, 1].astype(np.float64)
+    if mech.frame_angle and not quirks.cognate_frame:       # D025: into the source frame
+        turn = mech.frame_angle
+        dx, dy = dx * np.cos(turn) - dy * np.sin(turn), dx * np.sin(turn) + dy * np.cos(turn)
+    return dx, dy, delta[:, 2].astype(np.float64)
+
+
+def source_case1(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = None,
+                 rpm: float | None = None, mass_lbf: float = 2.0,
+                 section: Section = EXAMPLE.section, quirks: Quirks = PRINTED) -> dict:
+    """Case I, source four-bar: coupler point ``xp, yp`` (in), its elastic deflection
+    ``dx, dy`` (in) and rotation ``rot`` (rad) over ``deg``; see source_mechanics."""
+    deg = np.atleast_1d(np.asarray(deg, dtype=np.float64))
+    mech = source_mechanics(deg, lengths, alp, rpm, quirks)
+    dx, dy, rot = case1_deflection(mech, mass_lbf, section, quirks)
+    out = {"xp": mech.xp, "yp": mech.yp, "dx": dx, "dy": dy, "rot": rot}
     check_finite(deg, "source", **out)
     return out
 
 
-def cognate_case1(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = None,
-                  rpm: float = EXAMPLE.rpm, mass_lbf: float = 2.0,
-                  section: Section = EXAMPLE.section, quirks: Quirks = PRINTED) -> dict:
-    """Case I, crossed coupler cognate of the source four-bar (``lengths``, ``alp``).
+def cognate_mechanics(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = None,
+                      rpm: float = EXAMPLE.rpm, quirks: Quirks = PRINTED) -> Mechanics:
+    """Kinematics and beta of the crossed coupler cognate of the source four-bar
+    (``lengths``, ``alp``), in the cognate's own frame (listing statements 20-110).
 
-    Returns ``xp, yp`` (the source's coupler point, as the cognate listing computes
-    it: the rigid-mode columns of Table I), ``cxp, cyp`` (the cognate's coupler
-    point turned into the source frame), ``dx, dy`` (in) and ``rot`` (rad).
+    ``extra`` holds the source's coupler point ``xp, yp`` as this listing computes it
+    (the rigid-mode columns of Table I) and the cognate's ``cxp, cyp`` turned into
+    the source frame.
     """
     deg = np.atleast_1d(np.asarray(deg, dtype=np.float64))
     real4 = quirks.real4_storage
     pi = _pi(quirks)
     if alp is None:
         alp = pi / 3.0
-    if not np.isfinite(rpm) or not np.isfinite(alp) or not np.isfinite(mass_lbf):
-        raise ValueError("alp, rpm and mass_lbf must be finite")
+    if not np.isfinite(rpm) or not np.isfinite(alp):
+        raise ValueError("alp and rpm must be finite")
     speed = float(np.float32(rpm)) if real4 else float(rpm)       # S is REAL*4 in the listing
     l1, l2, l3, l4, l5 = lengths.l1, lengths.l2, lengths.l3, lengths.l4, lengths.l5
-    section = section.as_listing_holds(real4)
 
     t2 = input_angles(deg, quirks)
     t3, _ = half_angle_positions(t2, freudenstein_constants(l1, l3, l4, l5), deg, "source")
@@ -243,11 +280,20 @@ def cognate_case1(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = N
         xpa = -(cl1 * om2 * om2 * np.cos(t2)) + (cl2 * om3 * om3 * np.cos(gam)) - (cl2 * alph3 * np.sin(gam))
         ypa = -(cl1 * om2 * om2 * np.sin(t2)) - (cl2 * om3 * om3 * np.sin(gam)) - (cl2 * alph3 * np.cos(gam))
 
-        # Coupler equilibrium of the crossed cognate, eqs. (20)-(24).
-        g1 = (cl2 * np.cos(t2) * np.sin(gam)) + (cl2 * np.sin(t2) * np.cos(gam))
-        h1 = (cl2 * np.cos(t2) * np.cos(gam)) - (cl2 * np.sin(t2) * np.sin(gam))
-        i1 = (cl2 * np.cos(t2) * np.sin(gam)) + (cl3 * np.cos(ct3) * np.cos(ct4)) \
-            + (cl2 * np.sin(ct4) * np.cos(gam)) + (cl3 * np.sin(ct4) * np.sin(ct3))
+        # Coupler equilibrium of the crossed cognate, eqs. (20)-(24): the pin forces
+        # f4, f5 act at A along (-cos t2, -sin t2), (sin t2, -cos t2); f6 at B along
+        # (cos t4, sin t4); the loop is CL1 e^{i t2} - CL3 e^{i t3} + CL4 e^{i t4} = CL5.
+        if quirks.cognate_moment_row:                                                  # D026
+            g1 = (cl2 * np.cos(t2) * np.sin(gam)) + (cl2 * np.sin(t2) * np.cos(gam))
+            h1 = (cl2 * np.cos(t2) * np.cos(gam)) - (cl2 * np.sin(t2) * np.sin(gam))
+            i1 = (cl2 * np.cos(t2) * np.sin(gam)) + (cl3 * np.cos(ct3) * np.cos(ct4)) \
+                + (cl2 * np.sin(ct4) * np.cos(gam)) + (cl3 * np.sin(ct4) * np.sin(ct3))
+        else:   # moments about P, (pin - P) x direction, as rows 7-8 take them
+            ax, ay = cl2 * np.cos(gam), -cl2 * np.sin(gam)                 # A - P
+            bx, by = ax - cl3 * np.cos(ct3), ay - cl3 * np.sin(ct3)        # B - P
+            g1 = -ax * np.sin(t2) + ay * np.cos(t2)
+            h1 = -ax * np.cos(t2) - ay * np.sin(t2)
+            i1 = bx * np.sin(ct4) - by * np.cos(ct4)
         rows456 = _three_by_three_inverse_rows(-np.cos(t2), np.sin(t2), np.cos(ct4), -np.sin(t2),
                                                -np.cos(t2), np.sin(ct4), g1, h1, i1)
         cctx = np.cos(ct3 - ct4) / np.sin(ct3 - ct4)
@@ -260,15 +306,24 @@ def cognate_case1(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = N
             np.stack([np.stack([-cl2 * s * cctx / cl3, -cl2 * c * cctx / cl3, cctx / cl3], -1),
                       np.stack([-cl2 * s, -cl2 * c, one], -1)], -2),
         ], axis=-2)
-    load = inertia_load(xpa, ypa, mass_lbf, quirks)
-    delta = deflection(beta, flexibility(cl2, cl1, cl3, cl4, section, quirks), load, quirks)
-    dx, dy = delta[:, 0].astype(np.float64), delta[:, 1].astype(np.float64)
-    if not quirks.cognate_frame:                 # D025: turn the deflection into the source frame
-        dx, dy = dx * np.cos(-cog.beta) - dy * np.sin(-cog.beta), dx * np.sin(-cog.beta) + dy * np.cos(-cog.beta)
     xdp = store(xpp - cl5, real4).astype(np.float64)                      # XDP is REAL*4
     cxp = store((xdp * np.cos(-cog.beta)) - (ypp * np.sin(-cog.beta)), real4).astype(np.float64) + l5
     cyp = (xdp * np.sin(-cog.beta)) + (ypp * np.cos(-cog.beta))
-    out = {"xp": xp, "yp": yp, "cxp": cxp, "cyp": cyp, "dx": dx, "dy": dy,
-           "rot": delta[:, 2].astype(np.float64)}
+    return Mechanics(xpp, ypp, np.stack([xpa, ypa], -1), beta, (cl2, cl1, cl3, cl4), -cog.beta,
+                     extra={"xp": xp, "yp": yp, "cxp": cxp, "cyp": cyp, "t2": t2, "t3": ct3, "t4": ct4,
+                            "om3": om3, "alph3": alph3, "cognate": cog})
+
+
+def cognate_case1(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = None,
+                  rpm: float = EXAMPLE.rpm, mass_lbf: float = 2.0,
+                  section: Section = EXAMPLE.section, quirks: Quirks = PRINTED) -> dict:
+    """Case I, crossed coupler cognate: ``xp, yp`` (the source's coupler point as the
+    cognate listing computes it), ``cxp, cyp`` (the cognate's, in the source frame),
+    ``dx, dy`` (in) and ``rot`` (rad) over ``deg``; see cognate_mechanics."""
+    deg = np.atleast_1d(np.asarray(deg, dtype=np.float64))
+    mech = cognate_mechanics(deg, lengths, alp, rpm, quirks)
+    dx, dy, rot = case1_deflection(mech, mass_lbf, section, quirks)
+    out = {"xp": mech.extra["xp"], "yp": mech.extra["yp"], "cxp": mech.extra["cxp"],
+           "cyp": mech.extra["cyp"], "dx": dx, "dy": dy, "rot": rot}
     check_finite(deg, "cognate", **out)
     return out

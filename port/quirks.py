@@ -21,6 +21,7 @@ class Quirks:
     inertia_sign: bool = True            # D018  P = +m*a; the inertia (d'Alembert) force is -m*a
     real4_storage: bool = True           # D019  matrices and forces stored REAL*4
     cognate_frame: bool = True           # D025  cognate deflections left in the cognate's own frame
+    cognate_moment_row: bool = True      # D026  cognate CG1, CH1, CI1 are not the moments about P
 
     @classmethod
     def names(cls) -> list[str]:
