@@ -1,0 +1,32 @@
+# linkrepro: `make reproduce` and `make test` each set up a fresh Debian machine first
+# (gfortran from apt if missing, a .venv, the package installed into it), then run.
+PYTHON ?= python3
+VENV   := .venv
+BIN    := $(VENV)/bin
+SOURCES := pyproject.toml meson.build $(shell find legacy port harness pkgroot -type f -not -name '*.pyc' 2>/dev/null)
+
+.PHONY: reproduce test bench setup clean
+
+reproduce: $(VENV)/.installed
+	$(BIN)/linkrepro reproduce --out out
+
+test: $(VENV)/.installed
+	$(BIN)/python -m pytest -q tests
+
+bench: $(VENV)/.installed
+	$(BIN)/linkrepro bench
+
+setup: $(VENV)/.installed
+
+$(VENV)/.installed: $(SOURCES)
+	@command -v gfortran >/dev/null 2>&1 || { \
+	  echo "gfortran not found: installing it from Debian's packages"; \
+	  SUDO=$$( [ "$$(id -u)" = 0 ] || echo sudo ); \
+	  $$SUDO apt-get update -qq && $$SUDO apt-get install -y -qq gfortran; }
+	@test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
+	$(BIN)/python -m pip install -q --upgrade pip
+	$(BIN)/python -m pip install -q ".[test]"
+	@touch $@
+
+clean:
+	rm -rf $(VENV) build out
