@@ -55,6 +55,18 @@ def plot_scene(scene, published, results: dict[str, pd.DataFrame], outdir: Path)
     return paths
 
 
+def registered_by_kind(diff: pd.DataFrame, register: dict[str, Deviation]) -> pd.DataFrame:
+    """Per engine, how many registered cells each kind of entry explains."""
+    rows = []
+    for engine, ids in diff.loc[diff["status"] == "registered", ["engine", "register_ids"]].itertuples(index=False):
+        for kind in {register[i].kind for i in ids.split() if i in register}:
+            rows.append((engine, kind))
+    if not rows:
+        return pd.DataFrame(index=pd.Index([], name="engine"))
+    frame = pd.DataFrame(rows, columns=["engine", "kind"])
+    return frame.groupby(["engine", "kind"]).size().unstack(fill_value=0)
+
+
 def render_entry(entry: Deviation) -> str:
     lines = [f"#### {entry.id} ({entry.kind}{', ' + entry.certainty if entry.certainty else ''}): {entry.title}",
              f"- where: {entry.where}", f"- printed: `{entry.printed}`", f"- meant: `{entry.meant}`",
@@ -75,6 +87,9 @@ def scene_report(scene, diff: pd.DataFrame, timings: dict[str, float], register:
     out += ["", "## Cells against the published table",
             "", "A cell matches when it is within half a unit of the printed last digit.", "",
             _md_table(counts, "{}"), "",
+            "Registered cells by the kind of entry that explains them (a cell explained by "
+            "entries of several kinds counts under each):", "",
+            _md_table(registered_by_kind(diff, register), "{}"), "",
             "## Largest |engine - published| per column (over produced cells)", "",
             _md_table(column_max(diff, "abs_diff")), "",
             "## Largest |engine - legacy| per column", "",

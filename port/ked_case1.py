@@ -215,9 +215,10 @@ def case1_deflection(mech: Mechanics, mass_lbf: float, section: Section, quirks:
     """dx, dy (in, in the source frame unless D025 is on) and rot (rad) of the path point."""
     if not np.isfinite(mass_lbf):
         raise ValueError("mass_lbf must be finite")
-    load = inertia_load(mech.acc[:, 0], mech.acc[:, 1], mass_lbf, quirks)
     flex = flexibility(*mech.flex_lengths, section.as_listing_holds(quirks.real4_storage), quirks)
-    delta = deflection(mech.beta, flex, load, quirks)
+    with np.errstate(invalid="ignore", over="ignore"):   # singular positions: check_finite reports them
+        load = inertia_load(mech.acc[:, 0], mech.acc[:, 1], mass_lbf, quirks)
+        delta = deflection(mech.beta, flex, load, quirks)
     dx, dy = delta[:, 0].astype(np.float64), delta[:, 1].astype(np.float64)
     if mech.frame_angle and not quirks.cognate_frame:       # D025: into the source frame
         turn = mech.frame_angle

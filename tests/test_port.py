@@ -2,7 +2,7 @@
 import numpy as np
 import pytest
 
-from linkrepro import AssemblyError, legacy
+from linkrepro import AssemblyError, SingularPositionError, legacy
 from linkrepro.port import CORRECTED, PRINTED, Lengths, Section, cognate_case1, source_case1
 from linkrepro.port.ked_case1 import (EXAMPLE, case1_deflection, cognate_mechanics, flexibility,
                                       source_mechanics)
@@ -139,6 +139,17 @@ def test_deflection_scales_with_mass_and_speed_squared():
     fast = source_case1(deg, rpm=600.0, mass_lbf=2.0, quirks=CORRECTED)
     np.testing.assert_allclose(heavy["dx"], 2 * base["dx"], rtol=1e-12)
     np.testing.assert_allclose(fast["dy"], 4 * base["dy"], rtol=1e-12)
+
+
+@pytest.mark.parametrize("lengths", [(10, 10, 30, 10, 30), (10, 10, 20, 20, 10)])
+def test_folded_linkage_raises_singular_position_in_both_engines(lengths):
+    """Coupler and follower collinear at 0 deg (L5 - L1 = L3 - L4), or crank pin on the
+    follower pivot: beta divides by zero there.  Both engines name the angle."""
+    with pytest.raises(SingularPositionError) as from_port:
+        source_case1(np.arange(0.0, 361.0, 20.0), lengths=Lengths(*lengths), quirks=PRINTED)
+    with pytest.raises(SingularPositionError) as from_legacy:
+        legacy.case1_source(*lengths)
+    assert from_port.value.angle_deg == from_legacy.value.angle_deg == 0.0
 
 
 def test_port_bad_input_typed_errors():
