@@ -31,7 +31,11 @@ CA_PRINTED = float(np.float32(0.1963495408))          # in^2
 ME_PRINTED = float(np.float32(10000000.0))            # psi
 MI_PRINTED = float(np.float32(0.0030679615))          # in^4
 
-__all__ = ["case1_source", "case1_cognate", "gmtra", "mprd", "loc", "angle_grid"]
+__all__ = ["case1_source", "case1_cognate", "case2_source", "case3_source", "gmtra", "mprd", "loc",
+           "angle_grid"]
+
+#: DNTY=0.098 (lb/in^3, aluminium) as the REAL*4 literal holds it (Cases II, III).
+DENSITY_PRINTED = float(np.float32(0.098))
 
 
 def angle_grid(step_deg: float) -> int:
@@ -64,8 +68,8 @@ def _check_inputs(lengths, alp, rpm, mass_lbf, area, modulus, inertia, step_deg)
     _finite("rpm", rpm)
     if abs(rpm) > 2**31 - 1:
         raise ValueError(f"rpm={rpm} does not fit the listing's INTEGER speed variable")
-    if _finite("mass_lbf", mass_lbf) < 0:
-        raise ValueError(f"mass_lbf must be >= 0, got {mass_lbf}")
+    if _finite("mass", mass_lbf) < 0:
+        raise ValueError(f"the mass (or density) must be >= 0, got {mass_lbf}")
     _positive("area", area)
     _positive("modulus", modulus)
     _positive("inertia", inertia)
@@ -117,6 +121,43 @@ def case1_cognate(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_P
         l1, l2, l3, l4, l5, alp, rpm, mass_lbf, area, modulus, inertia, step_deg, n)
     out = {"deg": deg, "xp": xp, "yp": yp, "cxp": cxp, "cyp": cyp, "dx": dx, "dy": dy, "rot": rot}
     _raise_on_status(istat, deg, {k: v for k, v in out.items() if k != "deg"}, "KED1C")
+    return out
+
+
+def case2_source(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_PRINTED,
+                 rpm=300.0, density=DENSITY_PRINTED, area=CA_PRINTED, modulus=ME_PRINTED,
+                 inertia=MI_PRINTED, step_deg=20.0) -> dict[str, np.ndarray]:
+    """Run the Case II source program (Appendix C): each link's mass lumped at its joints.
+
+    ``density`` in lb/in^3 (weight); link masses are density * area * length.  Returns
+    ``deg``, ``xp, yp`` (coupler point, in), ``dx, dy`` (in) and ``rot`` (rad).
+    """
+    n = _check_inputs((l1, l2, l3, l4, l5), alp, rpm, density, area, modulus, inertia, step_deg)
+    deg, xp, yp, dx, dy, rot, istat = _f.ked2s(l1, l2, l3, l4, l5, alp, rpm, density, area,
+                                               modulus, inertia, step_deg, n)
+    out = {"deg": deg, "xp": xp, "yp": yp, "dx": dx, "dy": dy, "rot": rot}
+    _raise_on_status(istat, deg, {k: v for k, v in out.items() if k != "deg"}, "KED2S")
+    return out
+
+
+def case3_source(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_PRINTED,
+                 rpm=300.0, density=DENSITY_PRINTED, area=CA_PRINTED, modulus=ME_PRINTED,
+                 inertia=MI_PRINTED, step_deg=20.0) -> dict[str, np.ndarray]:
+    """Run the Case III source program (Appendix D): the extender's mass at 5 nodes.
+
+    Returns ``deg``, ``xp, yp`` (in), ``dx, dy, rot`` at the path point (node 1), and
+    ``nodes`` (N, 5, 3): dx, dy (in), rot (rad) of nodes 1..5 (10, 8, 6, 4, 2 in from the
+    crank pin) as the listing prints them.
+    """
+    n = _check_inputs((l1, l2, l3, l4, l5), alp, rpm, density, area, modulus, inertia, step_deg)
+    if l2 <= 8.0:
+        raise ValueError(f"l2={l2}: the listing's nodes L2-2 ... L2-8 need l2 > 8 in")
+    deg, xp, yp, deflections, istat = _f.ked3s(l1, l2, l3, l4, l5, alp, rpm, density, area,
+                                               modulus, inertia, step_deg, n)
+    nodes = np.ascontiguousarray(deflections.T.reshape(n, 5, 3))
+    out = {"deg": deg, "xp": xp, "yp": yp, "dx": nodes[:, 0, 0], "dy": nodes[:, 0, 1],
+           "rot": nodes[:, 0, 2], "nodes": nodes}
+    _raise_on_status(istat, deg, {"xp": xp, "yp": yp, "nodes": nodes}, "KED3S")
     return out
 
 

@@ -116,13 +116,16 @@ def flexibility(l_ext, l_in, l_cpl, l_fol, section: Section, quirks: Quirks) -> 
     return store(f, quirks.real4_storage)
 
 
-def deflection(beta: np.ndarray, flex: np.ndarray, load: np.ndarray, quirks: Quirks) -> np.ndarray:
-    """delta = beta^T F beta P, per angle; in the listings' MPRD order and precision."""
+def deflection(beta: np.ndarray, flex: np.ndarray, load: np.ndarray, quirks: Quirks,
+               right: np.ndarray | None = None) -> np.ndarray:
+    """delta = beta^T F right P (right = beta unless given: Case II's beta2), per angle;
+    in the listings' MPRD order and precision."""
     real4 = quirks.real4_storage
     beta = store(beta, real4)
+    right = beta if right is None else store(right, real4)
     left = product(np.swapaxes(beta, -1, -2), flex, real4)       # CALL GMTRA; MPRD(A,B,R,3,8,..,8)
-    left = product(left, beta, real4)                            # MPRD(A,B,R,3,8,..,3)
-    return product(left, load[..., :, None], real4)[..., 0]      # MPRD(A,B,R,3,3,..,1)
+    left = product(left, right, real4)                           # MPRD(A,B,R,3,8,..,3 or 8)
+    return product(left, load[..., :, None], real4)[..., 0]      # MPRD(A,B,R,3,3 or 8,..,1)
 
 
 def _three_by_three_inverse_rows(a, b, c, d, e, f, g, h, i):
@@ -154,11 +157,15 @@ class Mechanics:
 
 
 def source_mechanics(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = None,
-                     rpm: float | None = None, quirks: Quirks = PRINTED) -> Mechanics:
+                     rpm: float | None = None, quirks: Quirks = PRINTED,
+                     speed_type: str = "INTEGER") -> Mechanics:
     """Kinematics and beta of the source four-bar (listing statements 20-106).
 
     ``alp`` (rad) and ``rpm`` default to the example data (60 deg, 300 rpm), or
     to the listing's 101 deg and 400 rpm where the quirks D012 and D017 are on.
+    ``speed_type`` is how the listing stores the speed: the Case I listing in the
+    INTEGER N, Cases II and III in a REAL*4 variable.  ``extra`` also holds the
+    crank-pin and follower-pin accelerations ``acc_a``, ``acc_b`` (in/s^2).
     """
     deg = np.atleast_1d(np.asarray(deg, dtype=np.float64))
     pi = _pi(quirks)
@@ -169,7 +176,7 @@ def source_mechanics(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None 
     if not np.isfinite(rpm) or not np.isfinite(alp):
         raise ValueError("alp and rpm must be finite")
     if quirks.real4_storage:
-        rpm = float(np.trunc(rpm))          # the listing's speed variable N is INTEGER
+        rpm = float(np.trunc(rpm)) if speed_type == "INTEGER" else float(np.float32(rpm))
     l1, l2, l3, l4, l5 = lengths.l1, lengths.l2, lengths.l3, lengths.l4, lengths.l5
 
     t2 = input_angles(deg, quirks)
@@ -188,6 +195,11 @@ def source_mechanics(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None 
         alph3 = (cj * dj - aj * fj) / (aj * ej - bj * dj)           # input speed constant: ALPH2 = 0
         xpa = -(l1 * om2 * om2 * np.cos(t2)) - (l2 * om3 * om3 * np.cos(alp + t3)) - (l2 * alph3 * np.sin(alp + t3))
         ypa = -(l1 * om2 * om2 * np.sin(t2)) + (l2 * alph3 * np.cos(alp + t3)) - (l2 * om3 * om3 * np.sin(alp + t3))
+        # Crank pin A and follower pin B (Case II listing, XAA..YBA).
+        xaa, yaa = -(l1 * np.cos(t2) * om2 * om2), -(l1 * np.sin(t2) * om2 * om2)
+        b_sign = 1.0 if quirks.joint_b_acceleration_sign else -1.0                    # D032
+        xba = -(l1 * om2 * om2 * np.cos(t2)) - (l3 * om3 * om3 * np.cos(t3)) + b_sign * (l3 * alph3 * np.sin(t3))
+        yba = -(l1 * om2 * om2 * np.sin(t2)) - (l3 * om3 * om3 * np.sin(t3)) + (l3 * alph3 * np.cos(t3))
 
         # Coupler equilibrium, eqs. (10)-(13): P = [a b c; d e f; g h i] (f4, f5, f6).
         g_trig = np.cos(t2) if quirks.g_coefficient else np.sin(t2)                   # D014
@@ -208,7 +220,8 @@ def source_mechanics(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None 
                       np.stack([-s * l2, c * l2, one], -1)], -2),
         ], axis=-2)
     return Mechanics(xp, yp, np.stack([xpa, ypa], -1), beta, (l2, l1, l3, l4),
-                     extra={"t2": t2, "t3": t3, "t4": t4, "om3": om3, "alph3": alph3, "alp": alp})
+                     extra={"t2": t2, "t3": t3, "t4": t4, "om2": om2, "om3": om3, "alph3": alph3, "alp": alp,
+                            "acc_a": np.stack([xaa, yaa], -1), "acc_b": np.stack([xba, yba], -1)})
 
 
 def case1_deflection(mech: Mechanics, mass_lbf: float, section: Section, quirks: Quirks):

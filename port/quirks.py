@@ -22,6 +22,10 @@ class Quirks:
     real4_storage: bool = True           # D019  matrices and forces stored REAL*4
     cognate_frame: bool = True           # D025  cognate deflections left in the cognate's own frame
     cognate_moment_row: bool = True      # D026  cognate CG1, CH1, CI1 are not the moments about P
+    joint_load_components: bool = True   # D031  Case II: P5, P6, P7 not the components along the elements
+    joint_b_acceleration_sign: bool = True  # D032  Case II: +L3*ALPH3*SIN(T3) in B's x-acceleration
+    node_mass_from_pin: bool = True      # D033  Case III: node k carries the mass of the extender up to it
+    uncoupled_nodes: bool = True         # D034  Case III: block-diagonal beta*, F*: a node feels only its own load
 
     @classmethod
     def names(cls) -> list[str]:
@@ -32,6 +36,13 @@ class Quirks:
         if name not in self.names():
             raise ValueError(f"unknown quirk {name!r}; known: {', '.join(self.names())}")
         return replace(self, **{name: value})
+
+
+    def without(self, *names: str) -> "Quirks":
+        """A copy with the named quirks off (a listing that does not have those bugs)."""
+        for name in names:
+            self = self.only(name, False)
+        return self
 
 
 PRINTED = Quirks()

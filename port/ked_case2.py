@@ -1,0 +1,83 @@
+"""Case II of Ali (1977): each link's mass lumped at a joint, eight system forces.
+
+delta = beta1^T F beta2 P (eq. 32): beta1 the Case I force transformation (8x3),
+beta2 (8x8) = [beta1 | the columns of eq. (30)], F the Case I flexibility, P the
+inertia loads: the extender's mass at the path point (P1, P2), the input link's
+at the crank pin (P4 along, P5 across the link), the follower's at its pin (P6,
+along), the coupler's at the crank pin (P7, along the coupler).
+Masses are density * area * length (density in lbf/in^3, a weight).
+Units: inch, pound-force, second; degrees for ``deg``.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from .fourbar import Lengths, check_finite
+from .ked_case1 import EXAMPLE, GRAVITY_IN, Section, _pi, deflection, flexibility, source_mechanics
+from .quirks import PRINTED, Quirks
+from .real4 import store
+
+#: The bugs the Case II source listing has (those of Case I's source listing but the
+#: 101 deg coupler angle and the 400 rpm, which are the Case I listing's alone).
+LISTING = PRINTED.without("source_alpha_101", "source_rpm_400", "cognate_frame", "cognate_moment_row",
+                          "node_mass_from_pin", "uncoupled_nodes")
+DENSITY = 0.098          # lbf/in^3, aluminium (DNTY)
+
+
+def beta2(mech, quirks: Quirks) -> np.ndarray:
+    """beta2 (N, 8, 8): beta1, then P4..P8 into f4, f5, f6, (f4, f5, f7), f8 (eq. 30)."""
+    t2, t3 = mech.extra["t2"], mech.extra["t3"]
+    n = len(t2)
+    extra = np.zeros((n, 8, 5))
+    extra[:, 3, 0] = extra[:, 4, 1] = extra[:, 5, 2] = extra[:, 6, 3] = extra[:, 7, 4] = 1.0
+    extra[:, 3, 3] = -np.cos(t2 - t3)
+    extra[:, 4, 3] = np.sin(t2 - t3)
+    return np.concatenate([mech.beta, extra], axis=-1)
+
+
+def joint_loads(mech, lengths: Lengths, density: float, area: float, quirks: Quirks) -> np.ndarray:
+    """P1..P8 (N, 8) in lbf, as the listing forms them (statements 56-72)."""
+    real4 = quirks.real4_storage
+    t2, t3, t4 = mech.extra["t2"], mech.extra["t3"], mech.extra["t4"]
+    (xaa, yaa), (xba, yba) = mech.extra["acc_a"].T, mech.extra["acc_b"].T
+    m1, m2, m3, m4 = (density * (area * length) for length in (lengths.l1, lengths.l2, lengths.l3, lengths.l4))
+    g_const = float(np.float32(32.178) * np.float32(12.0)) if real4 else GRAVITY_IN
+    xpa, ypa = (store(a, real4).astype(np.float64) for a in mech.acc.T)        # XPA, YPA are REAL*4
+    if quirks.joint_load_components:                                            # D031
+        p5 = m1 * (yaa * np.sin(t2) - xaa * np.cos(t2))
+        p6 = m4 * (yba * np.sin(t4) - xba * np.cos(t4))
+        p7 = m3 * (yaa * np.sin(t3) - xaa * np.cos(t3))
+    else:   # along the element coordinates: f5 across the crank, f6 along the follower, -e3 (eq. 30)
+        p5 = m1 * (-xaa * np.sin(t2) + yaa * np.cos(t2))
+        p6 = m4 * (xba * np.cos(t4) + yba * np.sin(t4))
+        p7 = m3 * (-xaa * np.cos(t3) - yaa * np.sin(t3))
+    zero = np.zeros_like(t2)
+    loads = np.stack([(m2 * xpa) / g_const, (m2 * ypa) / g_const, zero,
+                      (m1 * (xaa * np.cos(t2) + yaa * np.sin(t2))) / g_const,
+                      p5 / g_const, p6 / g_const, p7 / g_const, zero], axis=-1)
+    return loads if quirks.inertia_sign else -loads                              # D018
+
+
+def case2_source(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = None,
+                 rpm: float = EXAMPLE.rpm, density: float = DENSITY,
+                 section: Section = EXAMPLE.section, quirks: Quirks = LISTING) -> dict:
+    """Case II, source four-bar: ``xp, yp`` (in), ``dx, dy`` (in) and ``rot`` (rad)."""
+    deg = np.atleast_1d(np.asarray(deg, dtype=np.float64))
+    if not np.isfinite(density) or density < 0:
+        raise ValueError(f"density must be finite and >= 0, got {density!r}")
+    real4 = quirks.real4_storage
+    alp = _pi(quirks) / 3.0 if alp is None else alp
+    mech = source_mechanics(deg, lengths, alp, rpm, quirks, speed_type="REAL")
+    sec = section.as_listing_holds(real4)
+    dens = float(np.float32(density)) if real4 else float(density)
+    with np.errstate(invalid="ignore", over="ignore"):
+        loads = store(joint_loads(mech, lengths, dens, sec.area, quirks), real4)
+        flex = flexibility(lengths.l2, lengths.l1, lengths.l3, lengths.l4, sec, quirks)
+        delta = deflection(mech.beta, flex, loads, quirks, right=beta2(mech, quirks))
+    out = {"xp": mech.xp, "yp": mech.yp, "dx": delta[:, 0].astype(np.float64),
+           "dy": delta[:, 1].astype(np.float64), "rot": delta[:, 2].astype(np.float64)}
+    check_finite(deg, "case II source", **out)
+    return out
+
+
+__all__ = ["LISTING", "DENSITY", "beta2", "joint_loads", "case2_source"]
