@@ -28,7 +28,9 @@ def quirk_effects(scene: Scene, published: PublishedTable, base: pd.DataFrame) -
     half = published.half_unit
     effects = {}
     for name in PRINTED.names():
-        moved = scene.port(PRINTED.only(name, False))
+        if not getattr(scene.printed_quirks, name):
+            continue                       # a bug this scene's listings do not have
+        moved = scene.port(scene.printed_quirks.only(name, False))
         delta = (moved[scene.columns] - base[scene.columns]).abs()
         effects[name] = delta > half[scene.columns].to_numpy()
     return effects
@@ -41,7 +43,8 @@ def diff_scene(scene: Scene, published: PublishedTable, results: dict[str, pd.Da
     legacy = results.get("legacy")
     effects = None
     if "port_corrected" in results:
-        effects = quirk_effects(scene, published, results.get("port_printed", scene.port(PRINTED)))
+        base = results.get("port_printed")
+        effects = quirk_effects(scene, published, base if base is not None else scene.port(scene.printed_quirks))
     quirk_ids = {name: entry.id for name, entry in by_quirk(register).items()}
     rows = []
     for engine, frame in results.items():

@@ -25,10 +25,11 @@ class PrintedProgramError(RuntimeError):
 
 
 def run_printed(program: str, timeout_s: float = 60.0) -> pd.DataFrame:
-    """Run one printed program; return its WRITE(6,200) rows (deg, dx, dy, rot).
+    """Run one printed program; return the path point's rows (deg, dx, dy, rot).
 
-    FORMAT 200 is (1H0,5X,F12.6,8X,F12.6,8X,F12.6,8X,F12.6): a carriage-control
-    character then four fixed-point numbers; the 1H1 line is the page header.
+    Cases I and II WRITE with FORMAT 200, (1H0,5X,F12.6,8X,F12.6,8X,F12.6,8X,F12.6):
+    a carriage-control '0' then four numbers.  Case III's FORMAT 500 starts a page
+    ('1') per angle with the angle and the tip's three values, then the other nodes.
     """
     exe = BIN_DIR / program
     if not exe.exists():
@@ -41,14 +42,21 @@ def run_printed(program: str, timeout_s: float = 60.0) -> pd.DataFrame:
         raise PrintedProgramError(f"{program} did not finish in {timeout_s} s") from exc
     if done.returncode != 0:
         raise PrintedProgramError(f"{program} exited with {done.returncode}: {done.stderr.strip()}")
-    rows = []
-    for line in done.stdout.splitlines():
-        if line[:1] != "0":
-            continue
-        fields = line[1:].split()
-        if len(fields) != 4:
-            raise PrintedProgramError(f"{program}: unexpected output line {line!r}")
-        rows.append([float(v) if v.lower() != "nan" else np.nan for v in fields])
-    if not rows:
+    frame = parse_printed_output(done.stdout)
+    if frame.empty:
         raise PrintedProgramError(f"{program} printed no result line")
+    return frame
+
+
+def parse_printed_output(text: str) -> pd.DataFrame:
+    """The path point's rows (deg, dx, dy, rot) of a printed program's output."""
+    rows = []
+    for line in text.splitlines():
+        fields = line[1:].split()
+        if line[:1] not in "01" or len(fields) != 4:
+            continue                       # page headers; Case III's lines for nodes 2-5
+        try:
+            rows.append([float(v) for v in fields])
+        except ValueError:
+            continue                       # the 1H1 column-heading line
     return pd.DataFrame(rows, columns=["deg", "dx", "dy", "rot"])

@@ -17,13 +17,17 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from .engines import parse_printed_output
 from .published_tables import PublishedTable
 from .register import REGISTER_PATH
 
 PRINTED_DIR = Path(__file__).resolve().parent.parent / "legacy" / "printed"
 FLAGS = ["-std=legacy", "-fno-automatic", "-ffp-contract=off", "-fno-fast-math", "-O1"]
-#: which published columns each printed program's WRITE gives
-COLUMNS = {"ali1977_case1_source.f": ("src_dx", "src_dy"), "ali1977_case1_cognate.f": ("cog_dx", "cog_dy")}
+#: the published table and columns each printed program's WRITE gives
+COLUMNS = {"ali1977_case1_source.f": ("ali1977_table1", ("src_dx", "src_dy")),
+           "ali1977_case1_cognate.f": ("ali1977_table1", ("cog_dx", "cog_dy")),
+           "ali1977_case2_source.f": ("ali1977_table2", ("src_dx", "src_dy")),
+           "ali1977_case3_source.f": ("ali1977_table3", ("src_dx", "src_dy"))}
 SSP = ["ssp_gmtra.f", "ssp_mprd.f", "ssp_loc.f"]
 
 
@@ -46,16 +50,14 @@ def _run_variant(program: str, edits: list[dict], workdir: Path) -> pd.DataFrame
     subprocess.run(["gfortran", *FLAGS, "-o", str(exe), str(src), *[str(PRINTED_DIR / s) for s in SSP]],
                    check=True, capture_output=True, timeout=120)
     done = subprocess.run([str(exe)], capture_output=True, text=True, timeout=60)
-    rows = [[float(v) for v in line[1:].split()] for line in done.stdout.splitlines()
-            if line[:1] == "0" and len(line[1:].split()) == 4]
-    return pd.DataFrame(rows, columns=["deg", "dx", "dy", "rot"]).drop_duplicates("deg").set_index("deg")
+    return parse_printed_output(done.stdout).drop_duplicates("deg").set_index("deg")
 
 
 def _matched(frame: pd.DataFrame, program: str, published: PublishedTable) -> tuple[int, int, float]:
     pub, half = published.values, published.half_unit
     rows = pub["input_deg"] < 360          # row 360 is a copy of row 0 (D011)
     matched, total, worst = 0, 0, 0.0
-    for col, quantity in zip(COLUMNS[program], ("dx", "dy")):
+    for col, quantity in zip(COLUMNS[program][1], ("dx", "dy")):
         got = frame[quantity].reindex(pub.loc[rows, "input_deg"]).to_numpy()
         err = np.abs(got - pub.loc[rows, col].to_numpy())
         err = np.where(np.isnan(err), np.inf, err)
@@ -78,7 +80,7 @@ def measure(table: str = "ali1977_table1") -> pd.DataFrame:
         baselines = {}
         for entry in entries:
             readings = entry.get("reading", [])
-            if not readings:
+            if not readings or COLUMNS.get(readings[0]["file"], ("",))[0] != table:
                 continue
             program = readings[0]["file"]
             if program not in baselines:

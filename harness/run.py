@@ -39,8 +39,9 @@ def run_scene(name: str, out_dir: Path, measure_readings: bool = True) -> dict:
     diff.to_csv(target / "diff.csv", index=False, float_format="%.9g")
     plots = plot_scene(scene, published, results, target)
     extra = "\n".join(f"**{f}**" for f in failures)
-    if measure_readings and scene.table.startswith("ali1977"):
-        extra += "\n\n" + readings.as_markdown(readings.measure(scene.table))
+    measured = readings.measure(scene.table) if measure_readings else None
+    if measured is not None and not measured.empty:
+        extra += "\n\n" + readings.as_markdown(measured)
     (target / "report.md").write_text(scene_report(scene, diff, timings, register, plots, extra))
     return {"scene": scene.name, "title": scene.title, "counts": summary(diff), "timings": timings,
             "failures": failures}

@@ -11,9 +11,13 @@ import pandas as pd
 
 from .. import legacy
 from ..port import CORRECTED, PRINTED, Quirks, cognate_case1, source_case1
+from ..port.ked_case2 import LISTING as CASE2_LISTING
+from ..port.ked_case2 import case2_source
+from ..port.ked_case3 import LISTING as CASE3_LISTING
+from ..port.ked_case3 import case3_source
 from .engines import run_printed
 
-TABLE1_COLUMNS = ["input_deg", "rigid_x", "rigid_y", "src_dx", "src_dy", "src_xnew", "src_ynew",
+KED_COLUMNS = ["input_deg", "rigid_x", "rigid_y", "src_dx", "src_dy", "src_xnew", "src_ynew",
                   "cog_dx", "cog_dy", "cog_xnew", "cog_ynew"]
 
 
@@ -28,6 +32,7 @@ class Scene:
     printed: Callable[[], pd.DataFrame]
     legacy: Callable[[], pd.DataFrame]
     port: Callable[[Quirks], pd.DataFrame]
+    printed_quirks: Quirks = PRINTED             # the quirks the scene's listings have
     notes: list[str] = field(default_factory=list)
 
     def run(self, engine: str) -> pd.DataFrame:
@@ -36,71 +41,116 @@ class Scene:
         if engine == "legacy":
             return self.legacy()
         if engine == "port_printed":
-            return self.port(PRINTED)
+            return self.port(self.printed_quirks)
         if engine == "port_corrected":
             return self.port(CORRECTED)
         raise ValueError(f"unknown engine {engine!r}")
 
 
-def _table1_frame(deg, rigid_x, rigid_y, src_dx, src_dy, cog_dx, cog_dy) -> pd.DataFrame:
-    """Table I's columns; K.E.D. coordinates are rigid + deflection, as the thesis adds them."""
+TABLE_DEG = np.arange(0.0, 361.0, 20.0)
+NOT_PRODUCED = {"dx": np.full(len(TABLE_DEG), np.nan), "dy": np.full(len(TABLE_DEG), np.nan)}
+
+
+def ked_frame(deg, rigid_x, rigid_y, src: dict, cog: dict) -> pd.DataFrame:
+    """The K.E.D. tables' columns; K.E.D. coordinates are rigid + deflection, as the thesis adds them."""
+    rigid_x, rigid_y = np.asarray(rigid_x, dtype=float), np.asarray(rigid_y, dtype=float)
     frame = pd.DataFrame({"input_deg": deg, "rigid_x": rigid_x, "rigid_y": rigid_y,
-                          "src_dx": src_dx, "src_dy": src_dy,
-                          "src_xnew": np.asarray(rigid_x) + np.asarray(src_dx),
-                          "src_ynew": np.asarray(rigid_y) + np.asarray(src_dy),
-                          "cog_dx": cog_dx, "cog_dy": cog_dy,
-                          "cog_xnew": np.asarray(rigid_x) + np.asarray(cog_dx),
-                          "cog_ynew": np.asarray(rigid_y) + np.asarray(cog_dy)})
-    return frame[TABLE1_COLUMNS]
+                          "src_dx": src["dx"], "src_dy": src["dy"],
+                          "src_xnew": rigid_x + np.asarray(src["dx"]),
+                          "src_ynew": rigid_y + np.asarray(src["dy"]),
+                          "cog_dx": cog["dx"], "cog_dy": cog["dy"],
+                          "cog_xnew": rigid_x + np.asarray(cog["dx"]),
+                          "cog_ynew": rigid_y + np.asarray(cog["dy"])})
+    return frame[KED_COLUMNS]
 
 
-TABLE1_DEG = np.arange(0.0, 361.0, 20.0)
+def _printed_rows(program: str | None) -> dict:
+    """What a printed program WRITEs at the table's angles (NaN where it does not)."""
+    if program is None:
+        return NOT_PRODUCED
+    frame = run_printed(program).drop_duplicates("deg").set_index("deg")
+    return {q: frame[q].reindex(TABLE_DEG).to_numpy() for q in ("dx", "dy")}
 
 
-def _table1_printed() -> pd.DataFrame:
+def _ked_printed(source: str, cognate: str | None) -> pd.DataFrame:
     """Only what the listings WRITE: deflections; no listing prints the rigid path."""
-    src = run_printed("ali1977_case1_source").set_index("deg")
-    cog = run_printed("ali1977_case1_cognate").set_index("deg")
-    pick = lambda frame, col: frame[col].reindex(TABLE1_DEG).to_numpy()   # noqa: E731
-    nan = np.full(len(TABLE1_DEG), np.nan)
-    frame = _table1_frame(TABLE1_DEG, nan, nan, pick(src, "dx"), pick(src, "dy"),
-                          pick(cog, "dx"), pick(cog, "dy"))
-    return frame
+    nan = np.full(len(TABLE_DEG), np.nan)
+    return ked_frame(TABLE_DEG, nan, nan, _printed_rows(source), _printed_rows(cognate))
 
 
 def _table1_legacy() -> pd.DataFrame:
     src = legacy.case1_source(step_deg=20.0)
     cog = legacy.case1_cognate(step_deg=20.0)
-    return _table1_frame(src["deg"], cog["xp"], cog["yp"], src["dx"], src["dy"], cog["dx"], cog["dy"])
+    return ked_frame(src["deg"], cog["xp"], cog["yp"], src, cog)
 
 
 def _table1_port(quirks: Quirks) -> pd.DataFrame:
-    src = source_case1(TABLE1_DEG, quirks=quirks)
-    cog = cognate_case1(TABLE1_DEG, quirks=quirks)
-    return _table1_frame(TABLE1_DEG, cog["xp"], cog["yp"], src["dx"], src["dy"], cog["dx"], cog["dy"])
+    src = source_case1(TABLE_DEG, quirks=quirks)
+    cog = cognate_case1(TABLE_DEG, quirks=quirks)
+    return ked_frame(TABLE_DEG, cog["xp"], cog["yp"], src, cog)
 
+
+def _source_only(src: dict) -> pd.DataFrame:
+    """Tables II and III: the rigid path from the source listing (ALP=PI/3); no cognate yet."""
+    return ked_frame(TABLE_DEG, src["xp"], src["yp"], src, NOT_PRODUCED)
+
+
+COMMON_INPUTS = ("L1=10, L2=10, L3=30, L4=25, L5=30 in; A=0.1963495408 in^2, E=1e7 psi, "
+                 "I=0.0030679615 in^4; PI=3.142857143 as printed. ")
 
 ALI1977_TABLE1 = Scene(
     name="ali1977-table1",
     title="Ali (1977) Table I: mass at the path point (Case I), source four-bar and crossed cognate",
     table="ali1977_table1",
-    columns=TABLE1_COLUMNS,
+    columns=KED_COLUMNS,
     key="input_deg",
-    inputs=("L1=10, L2=10, L3=30, L4=25, L5=30 in; A=0.1963495408 in^2, E=1e7 psi, "
-            "I=0.0030679615 in^4; W=2 lbf at the path point; PI=3.142857143 as printed. "
+    inputs=(COMMON_INPUTS + "W=2 lbf at the path point. "
             "Source columns: the source listing as printed (400 rpm, ALP=1.762782545 rad = 101 deg). "
             "Cognate columns: the cognate listing (300 rpm, ALP=PI/3). Rigid-mode columns: the "
             "cognate listing's XP, YP (statements 30-31). K.E.D. columns: rigid + deflection. "
             "port_corrected: the example data of chapter IV (300 rpm, 60 deg, true pi) with every "
             "registered bug removed."),
-    printed=_table1_printed,
+    printed=lambda: _ked_printed("ali1977_case1_source", "ali1977_case1_cognate"),
     legacy=_table1_legacy,
     port=_table1_port,
     notes=["The printed engine shows only what the listings WRITE (the deflections); the source "
            "listing stops before printing 360 deg."],
 )
 
-SCENES: dict[str, Scene] = {s.name: s for s in [ALI1977_TABLE1]}
+ALI1977_TABLE2 = Scene(
+    name="ali1977-table2",
+    title="Ali (1977) Table II: mass at each joint (Case II), source four-bar and crossed cognate",
+    table="ali1977_table2",
+    columns=KED_COLUMNS,
+    key="input_deg",
+    inputs=(COMMON_INPUTS + "300 rpm, ALP=PI/3; each link's weight 0.098 lbf/in^3 * A * length "
+            "lumped at a joint (Appendix C). Rigid and source columns: the Case II source listing. "
+            "Cognate columns: the Case II cognate listing lacks the page that loads and solves it "
+            "(statements 241-281), see D037."),
+    printed=lambda: _ked_printed("ali1977_case2_source", None),
+    legacy=lambda: _source_only(legacy.case2_source(step_deg=20.0)),
+    port=lambda q: _source_only(case2_source(TABLE_DEG, quirks=q)),
+    printed_quirks=CASE2_LISTING,
+    notes=["Cognate columns are not produced yet (D037)."],
+)
+
+ALI1977_TABLE3 = Scene(
+    name="ali1977-table3",
+    title="Ali (1977) Table III: distributed mass model (Case III, n = 5), source four-bar and cognate",
+    table="ali1977_table3",
+    columns=KED_COLUMNS,
+    key="input_deg",
+    inputs=(COMMON_INPUTS + "300 rpm, ALP=PI/3; the extender's weight at 5 nodes (Appendix D). "
+            "Rigid and source columns: the Case III source listing (the only program Appendix D "
+            "prints). port_corrected: the coupled 5-segment model. Cognate columns: no listing, D037."),
+    printed=lambda: _ked_printed("ali1977_case3_source", None),
+    legacy=lambda: _source_only(legacy.case3_source(step_deg=20.0)),
+    port=lambda q: _source_only(case3_source(TABLE_DEG, n=5, quirks=q)),
+    printed_quirks=CASE3_LISTING,
+    notes=["Cognate columns are not produced yet (D037)."],
+)
+
+SCENES: dict[str, Scene] = {s.name: s for s in [ALI1977_TABLE1, ALI1977_TABLE2, ALI1977_TABLE3]}
 
 
 def get(name: str) -> Scene:
