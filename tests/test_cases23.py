@@ -1,0 +1,121 @@
+"""Cases II and III: the port against legacy, and against the theory's own reductions."""
+import numpy as np
+import pytest
+
+from linkrepro import legacy
+from linkrepro.port import CORRECTED, Lengths, source_case1
+from linkrepro.port.ked_case1 import EXAMPLE, deflection, flexibility, source_mechanics
+from linkrepro.port.ked_case2 import LISTING as CASE2, beta2, case2_source, joint_loads
+from linkrepro.port.ked_case3 import LISTING as CASE3, _coupled_tip, case3_source, node_positions
+
+DEG = np.arange(0.0, 361.0, 1.0)
+AREA, DENSITY = EXAMPLE.section.area, 0.098
+
+
+def test_case2_port_equals_legacy():
+    port, leg = case2_source(DEG, quirks=CASE2), legacy.case2_source(step_deg=1.0)
+    for key in ("xp", "yp", "dx", "dy", "rot"):
+        np.testing.assert_allclose(port[key], leg[key], rtol=1e-9, atol=1e-300, err_msg=key)
+
+
+def test_case3_port_equals_legacy_for_every_node_deflection():
+    """dx, dy of all five nodes; the rotations differ by the listing's slips D035, D036,
+    which the port does not model (no table prints a rotation)."""
+    port, leg = case3_source(DEG, quirks=CASE3, all_nodes=True), legacy.case3_source(step_deg=1.0)
+    for key in ("xp", "yp", "dx", "dy"):
+        np.testing.assert_allclose(port[key], leg[key], rtol=1e-9, atol=1e-300, err_msg=key)
+    np.testing.assert_allclose(port["nodes"][..., :2], leg["nodes"][..., :2], rtol=1e-9, atol=1e-300)
+
+
+def test_case2_with_only_the_path_point_load_is_case1():
+    """Eq. (32) with P4..P8 = 0: beta2 P = beta1 (P1, P2, P3), so delta is Case I's eq. (6)."""
+    deg = np.arange(0.0, 360.0, 15.0)
+    mech = source_mechanics(deg, rpm=300.0, quirks=CORRECTED, speed_type="REAL")
+    flex = flexibility(10.0, 10.0, 30.0, 25.0, EXAMPLE.section, CORRECTED)
+    loads = joint_loads(mech, EXAMPLE.lengths, DENSITY, AREA, CORRECTED)
+    only_p = loads.copy()
+    only_p[:, 3:] = 0.0
+    case2 = deflection(mech.beta, flex, only_p, CORRECTED, right=beta2(mech, CORRECTED))
+    case1 = deflection(mech.beta, flex, only_p[:, :3], CORRECTED)
+    np.testing.assert_allclose(case2, case1, rtol=1e-12, atol=1e-18)
+    full = deflection(mech.beta, flex, loads, CORRECTED, right=beta2(mech, CORRECTED))
+    assert np.abs(full - case1).max() > 1e-4          # the joint masses do matter
+
+
+def _fd_acceleration(point, deg, rpm=300.0, step=1e-3):
+    dt = np.radians(step) / (2 * np.pi * rpm / 60)
+    return (point(deg + step) - 2 * point(deg) + point(deg - step)) / dt**2
+
+
+def test_case2_corrected_joint_loads_project_finite_difference_accelerations():
+    """D031/D032: P4, P5 = m1 a_A along/across the crank, P6 = m4 a_B along the follower,
+    with a_A, a_B from finite differences of the pins' positions (A = L1 e^{i t2},
+    B = A + L3 e^{i t3})."""
+    deg = np.arange(5.0, 360.0, 35.0)
+    mech = source_mechanics(deg, rpm=300.0, quirks=CORRECTED, speed_type="REAL")
+    loads = joint_loads(mech, EXAMPLE.lengths, DENSITY, AREA, CORRECTED)
+    def pins(d):
+        m = source_mechanics(d, rpm=300.0, quirks=CORRECTED, speed_type="REAL")
+        t2, t3 = m.extra["t2"], m.extra["t3"]
+        a = 10.0 * np.exp(1j * t2)
+        return a, a + 30.0 * np.exp(1j * t3)
+    acc_a = _fd_acceleration(lambda d: pins(d)[0], deg)
+    acc_b = _fd_acceleration(lambda d: pins(d)[1], deg)
+    t2, t4 = mech.extra["t2"], mech.extra["t4"]
+    g = 12.0 * 32.178
+    m1, m4 = DENSITY * AREA * 10.0, DENSITY * AREA * 25.0
+    along = lambda acc, t: acc.real * np.cos(t) + acc.imag * np.sin(t)     # noqa: E731
+    across = lambda acc, t: -acc.real * np.sin(t) + acc.imag * np.cos(t)   # noqa: E731
+    scale = m4 * np.abs(acc_b).max() / g
+    # CORRECTED loads are inertia forces, -m a
+    np.testing.assert_allclose(loads[:, 3], -m1 * along(acc_a, t2) / g, atol=1e-5 * scale)
+    np.testing.assert_allclose(loads[:, 4], -m1 * across(acc_a, t2) / g, atol=1e-5 * scale)
+    np.testing.assert_allclose(loads[:, 5], -m4 * along(acc_b, t4) / g, atol=1e-5 * scale)
+
+
+def test_case3_with_one_node_is_case1_with_the_extender_at_the_tip():
+    """n = 1: the whole extender's weight at the path point; the coupled and the listing's
+    uncoupled model are then both Case I (eq. 6) with that weight."""
+    deg = np.arange(0.0, 360.0, 20.0)
+    weight = DENSITY * AREA * 10.0
+    case1 = source_case1(deg, rpm=300.0, mass_lbf=weight, quirks=CORRECTED)
+    for uncoupled in (True, False):
+        q = CORRECTED.only("uncoupled_nodes", uncoupled)
+        case3 = case3_source(deg, n=1, quirks=q)
+        np.testing.assert_allclose(case3["dx"], case1["dx"], rtol=1e-12)
+        np.testing.assert_allclose(case3["dy"], case1["dy"], rtol=1e-12)
+
+
+@pytest.mark.parametrize("n", [1, 3, 7])
+def test_segmented_extender_with_a_tip_load_is_the_same_beam(n):
+    """Euler-Bernoulli segments in series carry a tip load exactly as one beam: the coupled
+    model with only the tip node loaded must equal Case I for any n."""
+    deg = np.arange(0.0, 360.0, 30.0)
+    positions = node_positions(10.0, n)
+    mechs = [source_mechanics(deg, Lengths(10.0, r, 30.0, 25.0, 30.0), rpm=300.0, quirks=CORRECTED)
+             for r in positions]
+    tip_load = np.stack([-mechs[0].acc[:, 0], -mechs[0].acc[:, 1], 0 * deg], -1) * (2.0 / (12 * 32.178))
+    loads = np.zeros((n,) + tip_load.shape)
+    loads[0] = tip_load
+    coupled = _coupled_tip(mechs, loads, positions, EXAMPLE.lengths, EXAMPLE.section, CORRECTED)
+    case1 = source_case1(deg, rpm=300.0, quirks=CORRECTED)
+    np.testing.assert_allclose(coupled[:, 0], case1["dx"], rtol=1e-10)
+    np.testing.assert_allclose(coupled[:, 1], case1["dy"], rtol=1e-10)
+    np.testing.assert_allclose(coupled[:, 2], case1["rot"], rtol=1e-10)
+
+
+def test_coupled_model_converges_as_the_extender_is_refined():
+    """Distributing a fixed mass over more nodes converges (lumping at the node ends is a
+    first-order rule: the successive differences shrink about as 1/n)."""
+    deg = np.array([20.0, 100.0, 200.0, 300.0])
+    tips = [case3_source(deg, n=n, quirks=CORRECTED)["dx"] for n in (5, 10, 20, 40, 80)]
+    gaps = [np.abs(b - a).max() for a, b in zip(tips, tips[1:])]
+    assert all(later < earlier for earlier, later in zip(gaps, gaps[1:])), gaps
+    assert gaps[-1] < 0.6 * gaps[-2]
+
+
+def test_case3_rejects_bad_node_counts():
+    with pytest.raises(ValueError):
+        case3_source(DEG[:3], n=0)
+    with pytest.raises(ValueError):
+        case3_source(DEG[:3], n=2.5)
