@@ -20,14 +20,17 @@ def main(argv: list[str] | None = None) -> int:
 
     from .scenes import SCENES
     if args.command == "scenes":
+        from . import appendix
         for scene in SCENES.values():
             print(f"{scene.name:20s} {scene.title}")
+        print(f"{appendix.NAME:20s} {appendix.TITLE} (engine against engine)")
         return 0
     if args.command == "reproduce":
         from .run import reproduce, unexplained_count
-        unknown = [s for s in args.scenes if s not in SCENES]
+        from . import appendix
+        unknown = [s for s in args.scenes if s not in SCENES and s != appendix.NAME]
         if unknown:
-            parser.error(f"unknown scene(s): {', '.join(unknown)}; known: {', '.join(SCENES)}")
+            parser.error(f"unknown scene(s): {', '.join(unknown)}; known: {', '.join([*SCENES, appendix.NAME])}")
         done = reproduce(args.scenes, args.out)
         for item in done:
             print(f"{item['scene']}:")

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pandas as pd
 
-from . import readings, register as register_mod
+from . import appendix, readings, register as register_mod
 from .diff import diff_scene, summary
 from .engines import ENGINES, PrintedProgramError
 from .published_tables import PublishedTable
@@ -49,10 +49,11 @@ def run_scene(name: str, out_dir: Path, measure_readings: bool = True) -> dict:
 
 def reproduce(names: list[str] | None, out_dir: Path) -> list[dict]:
     """Run the named scenes (all by default) and write DIR/report.md over them."""
-    names = names or list(SCENES)
+    names = names or list(SCENES) + [appendix.NAME]
     out_dir.mkdir(parents=True, exist_ok=True)
     start = time.perf_counter()
-    done = [run_scene(name, out_dir) for name in names]
+    done = [run_scene(name, out_dir) for name in names if name != appendix.NAME]
+    curves = appendix.run(out_dir) if appendix.NAME in names else None
     total = time.perf_counter() - start
     lines = ["# linkrepro: reproduction report", "",
              "Each published cell, for each engine: `match` (within half a unit of the printed last "
@@ -66,6 +67,10 @@ def reproduce(names: list[str] | None, out_dir: Path) -> list[dict]:
             secs = item["timings"].get(engine, float("nan"))
             lines.append(f"| {engine} | " + " | ".join(str(v) for v in row) + f" | {secs:.4f} |")
         lines += [f"\n**{f}**" for f in item["failures"]] + [""]
+    if curves is not None:
+        lines += [f"## [{curves['scene']}]({curves['scene']}/report.md)", "", curves["title"], "",
+                  f"{curves['curves']} of 36 curves, engine against engine (no published numbers); largest "
+                  f"|port - legacy| {curves['max_engine_gap']:.3g}; missing: {', '.join(curves['missing']) or 'none'}.", ""]
     lines.append(f"Total wall time of this reproduce run: {total:.2f} s.")
     (out_dir / "report.md").write_text("\n".join(lines) + "\n")
     return done
