@@ -28,9 +28,7 @@ def quirk_effects(scene: Scene, published: PublishedTable, base: pd.DataFrame) -
     half = published.half_unit
     effects = {}
     for name in PRINTED.names():
-        if not getattr(scene.printed_quirks, name):
-            continue                       # a bug this scene's listings do not have
-        moved = scene.port(scene.printed_quirks.only(name, False))
+        moved = scene.port(PRINTED.only(name, False))
         delta = (moved[scene.columns] - base[scene.columns]).abs()
         effects[name] = delta > half[scene.columns].to_numpy()
     return effects
@@ -44,7 +42,7 @@ def diff_scene(scene: Scene, published: PublishedTable, results: dict[str, pd.Da
     effects = None
     if "port_corrected" in results:
         base = results.get("port_printed")
-        effects = quirk_effects(scene, published, base if base is not None else scene.port(scene.printed_quirks))
+        effects = quirk_effects(scene, published, base if base is not None else scene.port(PRINTED))
     quirk_ids = {name: entry.id for name, entry in by_quirk(register).items()}
     rows = []
     for engine, frame in results.items():

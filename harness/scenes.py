@@ -11,10 +11,12 @@ import pandas as pd
 
 from .. import legacy
 from ..port import CORRECTED, PRINTED, Quirks, cognate_case1, source_case1
+from ..port.ked_case2 import COGNATE_LISTING as CASE2_COGNATE
 from ..port.ked_case2 import LISTING as CASE2_LISTING
-from ..port.ked_case2 import case2_source
+from ..port.ked_case2 import case2_cognate, case2_source
+from ..port.ked_case3 import COGNATE_LISTING as CASE3_COGNATE
 from ..port.ked_case3 import LISTING as CASE3_LISTING
-from ..port.ked_case3 import case3_source
+from ..port.ked_case3 import case3_cognate, case3_source
 from .engines import run_printed
 
 KED_COLUMNS = ["input_deg", "rigid_x", "rigid_y", "src_dx", "src_dy", "src_xnew", "src_ynew",
@@ -31,8 +33,7 @@ class Scene:
     inputs: str                                  # what the engines are run with, in words
     printed: Callable[[], pd.DataFrame]
     legacy: Callable[[], pd.DataFrame]
-    port: Callable[[Quirks], pd.DataFrame]
-    printed_quirks: Quirks = PRINTED             # the quirks the scene's listings have
+    port: Callable[[Quirks], pd.DataFrame]      # quirks restricted to each listing's own (&)
     notes: list[str] = field(default_factory=list)
 
     def run(self, engine: str) -> pd.DataFrame:
@@ -40,8 +41,8 @@ class Scene:
             return self.printed()
         if engine == "legacy":
             return self.legacy()
-        if engine == "port_printed":
-            return self.port(self.printed_quirks)
+        if engine == "port_printed":          # each program with its own listing's quirks
+            return self.port(PRINTED)
         if engine == "port_corrected":
             return self.port(CORRECTED)
         raise ValueError(f"unknown engine {engine!r}")
@@ -90,9 +91,24 @@ def _table1_port(quirks: Quirks) -> pd.DataFrame:
     return ked_frame(TABLE_DEG, cog["xp"], cog["yp"], src, cog)
 
 
-def _source_only(src: dict) -> pd.DataFrame:
-    """Tables II and III: the rigid path from the source listing (ALP=PI/3); no cognate yet."""
-    return ked_frame(TABLE_DEG, src["xp"], src["yp"], src, NOT_PRODUCED)
+def _with_source_rigid(src: dict, cog: dict) -> pd.DataFrame:
+    """Tables II and III: the rigid path from the source listing (its ALP=PI/3)."""
+    return ked_frame(TABLE_DEG, src["xp"], src["yp"], src, cog)
+
+
+def _table2_port(quirks: Quirks) -> pd.DataFrame:
+    src = case2_source(TABLE_DEG, quirks=quirks & CASE2_LISTING)
+    cog = case2_cognate(TABLE_DEG, quirks=quirks & CASE2_COGNATE)
+    return _with_source_rigid(src, cog)
+
+
+def _table3_port(quirks: Quirks) -> pd.DataFrame:
+    src = case3_source(TABLE_DEG, n=5, quirks=quirks & CASE3_LISTING)
+    try:
+        cog = case3_cognate(TABLE_DEG, n=5, quirks=quirks & CASE3_COGNATE)
+    except NotImplementedError:
+        cog = NOT_PRODUCED
+    return _with_source_rigid(src, cog)
 
 
 COMMON_INPUTS = ("L1=10, L2=10, L3=30, L4=25, L5=30 in; A=0.1963495408 in^2, E=1e7 psi, "
@@ -125,13 +141,13 @@ ALI1977_TABLE2 = Scene(
     key="input_deg",
     inputs=(COMMON_INPUTS + "300 rpm, ALP=PI/3; each link's weight 0.098 lbf/in^3 * A * length "
             "lumped at a joint (Appendix C). Rigid and source columns: the Case II source listing. "
-            "Cognate columns: the Case II cognate listing lacks the page that loads and solves it "
-            "(statements 241-281), see D037."),
+            "Cognate columns: the Case II cognate listing with the missing page (statements 241-281) "
+            "reconstructed from the source listing's loads, see D037."),
     printed=lambda: _ked_printed("ali1977_case2_source", None),
-    legacy=lambda: _source_only(legacy.case2_source(step_deg=20.0)),
-    port=lambda q: _source_only(case2_source(TABLE_DEG, quirks=q)),
-    printed_quirks=CASE2_LISTING,
-    notes=["Cognate columns are not produced yet (D037)."],
+    legacy=lambda: _with_source_rigid(legacy.case2_source(step_deg=20.0), legacy.case2_cognate(step_deg=20.0)),
+    port=_table2_port,
+    notes=["Cognate columns: the Case II cognate listing with its missing page RECONSTRUCTED (D037); "
+           "the printed engine cannot give them (the printed program never sets them)."],
 )
 
 ALI1977_TABLE3 = Scene(
@@ -142,12 +158,13 @@ ALI1977_TABLE3 = Scene(
     key="input_deg",
     inputs=(COMMON_INPUTS + "300 rpm, ALP=PI/3; the extender's weight at 5 nodes (Appendix D). "
             "Rigid and source columns: the Case III source listing (the only program Appendix D "
-            "prints). port_corrected: the coupled 5-segment model. Cognate columns: no listing, D037."),
+            "prints). port_corrected: the coupled 5-segment model. Cognate columns: a port-only "
+            "reconstruction, D037."),
     printed=lambda: _ked_printed("ali1977_case3_source", None),
-    legacy=lambda: _source_only(legacy.case3_source(step_deg=20.0)),
-    port=lambda q: _source_only(case3_source(TABLE_DEG, n=5, quirks=q)),
-    printed_quirks=CASE3_LISTING,
-    notes=["Cognate columns are not produced yet (D037)."],
+    legacy=lambda: _with_source_rigid(legacy.case3_source(step_deg=20.0), NOT_PRODUCED),
+    port=_table3_port,
+    notes=["Cognate columns: a port-only RECONSTRUCTION (no listing exists, D037); legacy and the "
+           "corrected (coupled) model do not give them."],
 )
 
 SCENES: dict[str, Scene] = {s.name: s for s in [ALI1977_TABLE1, ALI1977_TABLE2, ALI1977_TABLE3]}

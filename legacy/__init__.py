@@ -31,7 +31,7 @@ CA_PRINTED = float(np.float32(0.1963495408))          # in^2
 ME_PRINTED = float(np.float32(10000000.0))            # psi
 MI_PRINTED = float(np.float32(0.0030679615))          # in^4
 
-__all__ = ["case1_source", "case1_cognate", "case2_source", "case3_source", "gmtra", "mprd", "loc",
+__all__ = ["case1_source", "case1_cognate", "case2_source", "case2_cognate", "case3_source", "gmtra", "mprd", "loc",
            "angle_grid"]
 
 #: DNTY=0.098 (lb/in^3, aluminium) as the REAL*4 literal holds it (Cases II, III).
@@ -137,6 +137,23 @@ def case2_source(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_PR
                                                modulus, inertia, step_deg, n)
     out = {"deg": deg, "xp": xp, "yp": yp, "dx": dx, "dy": dy, "rot": rot}
     _raise_on_status(istat, deg, {k: v for k, v in out.items() if k != "deg"}, "KED2S")
+    return out
+
+
+def case2_cognate(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_PRINTED,
+                  rpm=300.0, density=DENSITY_PRINTED, area=CA_PRINTED, modulus=ME_PRINTED,
+                  inertia=MI_PRINTED, step_deg=20.0) -> dict[str, np.ndarray]:
+    """Run the Case II cognate program (Appendix C), its missing page (statements 241-281:
+    the loads and the last product) RECONSTRUCTED from the Case II source listing (D037).
+
+    Returns ``deg``, ``xp, yp`` (source coupler point, in), ``cxp, cyp`` (cognate's, in),
+    ``dx, dy`` (in) and ``rot`` (rad).
+    """
+    n = _check_inputs((l1, l2, l3, l4, l5), alp, rpm, density, area, modulus, inertia, step_deg)
+    deg, xp, yp, cxp, cyp, dx, dy, rot, istat = _f.ked2c(l1, l2, l3, l4, l5, alp, rpm, density, area,
+                                                         modulus, inertia, step_deg, n)
+    out = {"deg": deg, "xp": xp, "yp": yp, "cxp": cxp, "cyp": cyp, "dx": dx, "dy": dy, "rot": rot}
+    _raise_on_status(istat, deg, {k: v for k, v in out.items() if k != "deg"}, "KED2C")
     return out
 
 

@@ -325,7 +325,7 @@ def cognate_mechanics(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None
     cyp = (xdp * np.sin(-cog.beta)) + (ypp * np.cos(-cog.beta))
     return Mechanics(xpp, ypp, np.stack([xpa, ypa], -1), beta, (cl2, cl1, cl3, cl4), -cog.beta,
                      extra={"xp": xp, "yp": yp, "cxp": cxp, "cyp": cyp, "t2": t2, "t3": ct3, "t4": ct4,
-                            "om3": om3, "alph3": alph3, "cognate": cog})
+                            "om2": om2, "om3": om3, "alph3": alph3, "cognate": cog})
 
 
 def cognate_case1(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = None,

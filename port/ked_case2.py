@@ -13,7 +13,8 @@ from __future__ import annotations
 import numpy as np
 
 from .fourbar import Lengths, check_finite
-from .ked_case1 import EXAMPLE, GRAVITY_IN, Section, _pi, deflection, flexibility, source_mechanics
+from .ked_case1 import (EXAMPLE, GRAVITY_IN, Section, _pi, cognate_mechanics, deflection, flexibility,
+                        source_mechanics)
 from .quirks import PRINTED, Quirks
 from .real4 import store
 
@@ -21,17 +22,21 @@ from .real4 import store
 #: 101 deg coupler angle and the 400 rpm, which are the Case I listing's alone).
 LISTING = PRINTED.without("source_alpha_101", "source_rpm_400", "cognate_frame", "cognate_moment_row",
                           "node_mass_from_pin", "uncoupled_nodes")
+#: The cognate listing's (and reconstruction's) bugs: the Case I cognate's plus the joint loads.
+COGNATE_LISTING = PRINTED.without("source_alpha_101", "source_rpm_400", "i_coefficient", "g_coefficient",
+                                  "omega3_sign", "node_mass_from_pin", "uncoupled_nodes")
 DENSITY = 0.098          # lbf/in^3, aluminium (DNTY)
 
 
-def beta2(mech, quirks: Quirks) -> np.ndarray:
-    """beta2 (N, 8, 8): beta1, then P4..P8 into f4, f5, f6, (f4, f5, f7), f8 (eq. 30)."""
+def beta2(mech, quirks: Quirks, cognate: bool = False) -> np.ndarray:
+    """beta2 (N, 8, 8): beta1, then P4..P8 into f4, f5, f6, (f4, f5, f7), f8: eq. (30),
+    or for the crossed cognate eq. (31), with cos, sin(t3* - t2) in column 7."""
     t2, t3 = mech.extra["t2"], mech.extra["t3"]
     n = len(t2)
     extra = np.zeros((n, 8, 5))
     extra[:, 3, 0] = extra[:, 4, 1] = extra[:, 5, 2] = extra[:, 6, 3] = extra[:, 7, 4] = 1.0
-    extra[:, 3, 3] = -np.cos(t2 - t3)
-    extra[:, 4, 3] = np.sin(t2 - t3)
+    extra[:, 3, 3] = np.cos(t3 - t2) if cognate else -np.cos(t2 - t3)
+    extra[:, 4, 3] = np.sin(t3 - t2) if cognate else np.sin(t2 - t3)
     return np.concatenate([mech.beta, extra], axis=-1)
 
 
@@ -80,4 +85,40 @@ def case2_source(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = No
     return out
 
 
-__all__ = ["LISTING", "DENSITY", "beta2", "joint_loads", "case2_source"]
+def case2_cognate(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = None,
+                  rpm: float = EXAMPLE.rpm, density: float = DENSITY,
+                  section: Section = EXAMPLE.section, quirks: Quirks = COGNATE_LISTING) -> dict:
+    """Case II, crossed cognate: a RECONSTRUCTION (D037).  The listing's page with the loads
+    is missing; its loads are the source listing's (joint_loads) on the cognate's links
+    (density * area * CLk) and joints (crank pin A' = CL1 e^{i t2}, follower pin
+    B' = A' - CL3 e^{i t3*}), in the cognate's frame.  Returns ``xp, yp`` (source),
+    ``cxp, cyp``, ``dx, dy`` (in) and ``rot`` (rad)."""
+    deg = np.atleast_1d(np.asarray(deg, dtype=np.float64))
+    if not np.isfinite(density) or density < 0:
+        raise ValueError(f"density must be finite and >= 0, got {density!r}")
+    real4 = quirks.real4_storage
+    mech = cognate_mechanics(deg, lengths, alp, rpm, quirks)
+    cog, e = mech.extra["cognate"], mech.extra
+    om2, om3, alph3, t2, t3 = e["om2"], e["om3"], e["alph3"], e["t2"], e["t3"]
+    xaa, yaa = -(cog.cl1 * np.cos(t2) * om2 * om2), -(cog.cl1 * np.sin(t2) * om2 * om2)
+    xba = xaa + (cog.cl3 * om3 * om3 * np.cos(t3)) + (cog.cl3 * alph3 * np.sin(t3))
+    yba = yaa + (cog.cl3 * om3 * om3 * np.sin(t3)) - (cog.cl3 * alph3 * np.cos(t3))
+    e.update(acc_a=np.stack([xaa, yaa], -1), acc_b=np.stack([xba, yba], -1))
+    cog_lengths = Lengths(cog.cl1, cog.cl2, cog.cl3, cog.cl4, cog.cl5)
+    sec = section.as_listing_holds(real4)
+    dens = float(np.float32(density)) if real4 else float(density)
+    with np.errstate(invalid="ignore", over="ignore"):
+        loads = store(joint_loads(mech, cog_lengths, dens, sec.area, quirks), real4)
+        flex = flexibility(cog.cl2, cog.cl1, cog.cl3, cog.cl4, sec, quirks)
+        delta = deflection(mech.beta, flex, loads, quirks, right=beta2(mech, quirks, cognate=True))
+    dx, dy = delta[:, 0].astype(np.float64), delta[:, 1].astype(np.float64)
+    if not quirks.cognate_frame:                                                     # D025
+        c, s = np.cos(mech.frame_angle), np.sin(mech.frame_angle)
+        dx, dy = dx * c - dy * s, dx * s + dy * c
+    out = {"xp": e["xp"], "yp": e["yp"], "cxp": e["cxp"], "cyp": e["cyp"], "dx": dx, "dy": dy,
+           "rot": delta[:, 2].astype(np.float64)}
+    check_finite(deg, "case II cognate", **out)
+    return out
+
+
+__all__ = ["LISTING", "COGNATE_LISTING", "DENSITY", "beta2", "joint_loads", "case2_source", "case2_cognate"]

@@ -15,7 +15,8 @@ from __future__ import annotations
 import numpy as np
 
 from .fourbar import Lengths, check_finite
-from .ked_case1 import EXAMPLE, GRAVITY_IN, Section, _pi, deflection, flexibility, source_mechanics
+from .ked_case1 import (EXAMPLE, GRAVITY_IN, Section, _pi, cognate_mechanics, deflection, flexibility,
+                        source_mechanics)
 from .quirks import PRINTED, Quirks
 from .real4 import store
 
@@ -24,6 +25,11 @@ from .real4 import store
 LISTING = PRINTED.without("source_alpha_101", "source_rpm_400", "i_coefficient", "input_link_bending_area",
                           "cognate_frame", "cognate_moment_row", "joint_load_components",
                           "joint_b_acceleration_sign")
+#: The reconstruction's quirks for the cognate (no listing, D037): the Case I cognate
+#: listing's bugs with the Case III source listing's changes (E*I bending, node weights).
+COGNATE_LISTING = PRINTED.without("source_alpha_101", "source_rpm_400", "i_coefficient", "g_coefficient",
+                                  "omega3_sign", "input_link_bending_area", "joint_load_components",
+                                  "joint_b_acceleration_sign")
 DENSITY = 0.098          # lbf/in^3 (DNTY)
 
 
@@ -133,4 +139,33 @@ def case3_source(deg, n: int = 5, lengths: Lengths = EXAMPLE.lengths, alp: float
     return out
 
 
-__all__ = ["LISTING", "DENSITY", "node_positions", "node_weights", "case3_source"]
+def case3_cognate(deg, n: int = 5, lengths: Lengths = EXAMPLE.lengths, alp: float | None = None,
+                  rpm: float = EXAMPLE.rpm, density: float = DENSITY,
+                  section: Section = EXAMPLE.section, quirks: Quirks = COGNATE_LISTING) -> dict:
+    """Case III, crossed cognate: a RECONSTRUCTION (D037: Appendix D prints no cognate
+    program).  The tip block of the listing's uncoupled scheme on the Case I cognate:
+    its extender's weight at the path point.  The coupled model is not built for the
+    cognate (NotImplementedError).  Returns ``xp, yp``, ``dx, dy`` (in), ``rot`` (rad)."""
+    if not quirks.uncoupled_nodes:
+        raise NotImplementedError("the coupled Case III model is built for the source only (D037)")
+    deg = np.atleast_1d(np.asarray(deg, dtype=np.float64))
+    real4 = quirks.real4_storage
+    sec = section.as_listing_holds(real4)
+    dens = float(np.float32(density)) if real4 else float(density)
+    mech = cognate_mechanics(deg, lengths, alp, rpm, quirks)
+    cog = mech.extra["cognate"]
+    weight = node_weights(node_positions(cog.cl2, n), cog.cl2, dens, sec.area, quirks)[0]
+    with np.errstate(invalid="ignore", over="ignore"):
+        load = _load(mech, weight, quirks)
+        delta = deflection(mech.beta, flexibility(cog.cl2, cog.cl1, cog.cl3, cog.cl4, sec, quirks), load, quirks)
+    dx, dy = delta[:, 0].astype(np.float64), delta[:, 1].astype(np.float64)
+    if not quirks.cognate_frame:                                                     # D025
+        c, s = np.cos(mech.frame_angle), np.sin(mech.frame_angle)
+        dx, dy = dx * c - dy * s, dx * s + dy * c
+    out = {"xp": mech.extra["xp"], "yp": mech.extra["yp"], "dx": dx, "dy": dy, "rot": delta[:, 2].astype(np.float64)}
+    check_finite(deg, "case III cognate", **out)
+    return out
+
+
+__all__ = ["LISTING", "COGNATE_LISTING", "DENSITY", "node_positions", "node_weights", "case3_source",
+           "case3_cognate"]

@@ -38,6 +38,10 @@ class Quirks:
         return replace(self, **{name: value})
 
 
+    def __and__(self, other: "Quirks") -> "Quirks":
+        """The quirks on in both: a listing's own bugs, restricted to those switched on."""
+        return Quirks(**{n: getattr(self, n) and getattr(other, n) for n in self.names()})
+
     def without(self, *names: str) -> "Quirks":
         """A copy with the named quirks off (a listing that does not have those bugs)."""
         for name in names:

@@ -7,6 +7,7 @@ from linkrepro.harness import cli
 from linkrepro.harness.diff import diff_scene, quirk_effects
 from linkrepro.harness.published_tables import PublishedTable
 from linkrepro.harness.scenes import SCENES, get
+from linkrepro.port import PRINTED
 
 
 @pytest.fixture(scope="module", params=list(SCENES))
@@ -67,7 +68,7 @@ def test_rounding_claims_are_sums_of_printed_values(register):
 
 
 def test_each_quirk_moves_exactly_the_columns_its_entry_names(scene, published, register):
-    effects = quirk_effects(scene, published, scene.port(scene.printed_quirks))
+    effects = quirk_effects(scene, published, scene.port(PRINTED))
     for name, moved in effects.items():
         entry = next(e for e in register.values() if e.quirk == name)
         columns = sorted(c for c in scene.columns if moved[c].any())

@@ -8,7 +8,7 @@ from linkrepro.port import Quirks
 
 TAG = re.compile(r"!\s*(D\d{3})\s*$")
 PROGRAMS = ["ali1977_case1_source.f", "ali1977_case1_cognate.f", "ali1977_case2_source.f",
-            "ali1977_case3_source.f"]
+            "ali1977_case2_cognate.f", "ali1977_case3_source.f"]
 
 
 @pytest.mark.parametrize("name", PROGRAMS)
