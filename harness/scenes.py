@@ -104,10 +104,7 @@ def _table2_port(quirks: Quirks) -> pd.DataFrame:
 
 def _table3_port(quirks: Quirks) -> pd.DataFrame:
     src = case3_source(TABLE_DEG, n=5, quirks=quirks & CASE3_LISTING)
-    try:
-        cog = case3_cognate(TABLE_DEG, n=5, quirks=quirks & CASE3_COGNATE)
-    except NotImplementedError:
-        cog = NOT_PRODUCED
+    cog = case3_cognate(TABLE_DEG, n=5, quirks=quirks & CASE3_COGNATE)
     return _with_source_rigid(src, cog)
 
 
@@ -163,8 +160,8 @@ ALI1977_TABLE3 = Scene(
     printed=lambda: _ked_printed("ali1977_case3_source", None),
     legacy=lambda: _with_source_rigid(legacy.case3_source(step_deg=20.0), NOT_PRODUCED),
     port=_table3_port,
-    notes=["Cognate columns: a port-only RECONSTRUCTION (no listing exists, D037); legacy and the "
-           "corrected (coupled) model do not give them."],
+    notes=["Cognate columns: a port-only RECONSTRUCTION (no listing exists, D037); legacy does not "
+           "give them."],
 )
 
 SCENES: dict[str, Scene] = {s.name: s for s in [ALI1977_TABLE1, ALI1977_TABLE2, ALI1977_TABLE3]}

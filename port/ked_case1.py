@@ -221,6 +221,7 @@ def source_mechanics(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None 
         ], axis=-2)
     return Mechanics(xp, yp, np.stack([xpa, ypa], -1), beta, (l2, l1, l3, l4),
                      extra={"t2": t2, "t3": t3, "t4": t4, "om2": om2, "om3": om3, "alph3": alph3, "alp": alp,
+                            "ext_angle": t3 + alp,
                             "acc_a": np.stack([xaa, yaa], -1), "acc_b": np.stack([xba, yba], -1)})
 
 
@@ -253,13 +254,16 @@ def source_case1(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = No
 
 
 def cognate_mechanics(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = None,
-                      rpm: float = EXAMPLE.rpm, quirks: Quirks = PRINTED) -> Mechanics:
+                      rpm: float = EXAMPLE.rpm, quirks: Quirks = PRINTED,
+                      extender: float | None = None) -> Mechanics:
     """Kinematics and beta of the crossed coupler cognate of the source four-bar
     (``lengths``, ``alp``), in the cognate's own frame (listing statements 20-110).
 
     ``extra`` holds the source's coupler point ``xp, yp`` as this listing computes it
     (the rigid-mode columns of Table I) and the cognate's ``cxp, cyp`` turned into
-    the source frame.
+    the source frame.  ``extender`` (in) puts the path point at that distance from the
+    crank pin along the cognate's extender (default: the whole extender, CL2); Case III
+    uses it for its nodes.  ``extra["ext_angle"]`` is the extender's direction (rad).
     """
     deg = np.atleast_1d(np.asarray(deg, dtype=np.float64))
     real4 = quirks.real4_storage
@@ -277,7 +281,7 @@ def cognate_mechanics(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None
     yp = (l1 * np.sin(t2)) + (l2 * np.sin(alp + t3))
 
     cog = Cognate.of(lengths, alp, pi)
-    cl1, cl2, cl3, cl4, cl5 = cog.cl1, cog.cl2, cog.cl3, cog.cl4, cog.cl5
+    cl1, cl2, cl3, cl4, cl5 = cog.cl1, cog.cl2 if extender is None else extender, cog.cl3, cog.cl4, cog.cl5
     ct3, ct4 = half_angle_positions(t2, cog.constants(), deg, "cognate")
     gam = cog.calp - ct3
     xpp = (cl1 * np.cos(t2)) + (cl2 * np.cos(pi - (cog.calp - ct3)))
@@ -325,7 +329,7 @@ def cognate_mechanics(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None
     cyp = (xdp * np.sin(-cog.beta)) + (ypp * np.cos(-cog.beta))
     return Mechanics(xpp, ypp, np.stack([xpa, ypa], -1), beta, (cl2, cl1, cl3, cl4), -cog.beta,
                      extra={"xp": xp, "yp": yp, "cxp": cxp, "cyp": cyp, "t2": t2, "t3": ct3, "t4": ct4,
-                            "om2": om2, "om3": om3, "alph3": alph3, "cognate": cog})
+                            "om2": om2, "om3": om3, "alph3": alph3, "cognate": cog, "ext_angle": pi - gam})
 
 
 def cognate_case1(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = None,

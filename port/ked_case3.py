@@ -74,7 +74,7 @@ def _coupled_tip(mechs, loads, positions, lengths: Lengths, section: Section, qu
     r = positions[ascending]                                  # node radii, pin outward
     seg = np.diff(np.concatenate([[0.0], r]))                 # segment lengths
     tip = mechs[int(np.argmax(positions))]
-    t = tip.extra["t3"] + tip.extra["alp"]
+    t = tip.extra["ext_angle"]
     c, s = np.cos(t), np.sin(t)
     loads = loads[ascending]                                  # (n, N, 3)
     axial = loads[..., 0] * c + loads[..., 1] * s             # (n, N)
@@ -143,21 +143,29 @@ def case3_cognate(deg, n: int = 5, lengths: Lengths = EXAMPLE.lengths, alp: floa
                   rpm: float = EXAMPLE.rpm, density: float = DENSITY,
                   section: Section = EXAMPLE.section, quirks: Quirks = COGNATE_LISTING) -> dict:
     """Case III, crossed cognate: a RECONSTRUCTION (D037: Appendix D prints no cognate
-    program).  The tip block of the listing's uncoupled scheme on the Case I cognate:
-    its extender's weight at the path point.  The coupled model is not built for the
-    cognate (NotImplementedError).  Returns ``xp, yp``, ``dx, dy`` (in), ``rot`` (rad)."""
-    if not quirks.uncoupled_nodes:
-        raise NotImplementedError("the coupled Case III model is built for the source only (D037)")
+    program): the source listing's node scheme on the Case I cognate (the listing's
+    quirks: the tip block, the cognate extender's weight at the path point) or, with
+    D033/D034 off, the coupled n-segment model along the cognate's extender.
+    Returns ``xp, yp``, ``dx, dy`` (in), ``rot`` (rad)."""
     deg = np.atleast_1d(np.asarray(deg, dtype=np.float64))
     real4 = quirks.real4_storage
     sec = section.as_listing_holds(real4)
     dens = float(np.float32(density)) if real4 else float(density)
-    mech = cognate_mechanics(deg, lengths, alp, rpm, quirks)
-    cog = mech.extra["cognate"]
-    weight = node_weights(node_positions(cog.cl2, n), cog.cl2, dens, sec.area, quirks)[0]
+    tip_mech = cognate_mechanics(deg, lengths, alp, rpm, quirks)
+    cog = tip_mech.extra["cognate"]
+    positions = node_positions(cog.cl2, n)
+    weights = node_weights(positions, cog.cl2, dens, sec.area, quirks)
+    cog_lengths = Lengths(cog.cl1, cog.cl2, cog.cl3, cog.cl4, cog.cl5)
     with np.errstate(invalid="ignore", over="ignore"):
-        load = _load(mech, weight, quirks)
-        delta = deflection(mech.beta, flexibility(cog.cl2, cog.cl1, cog.cl3, cog.cl4, sec, quirks), load, quirks)
+        if quirks.uncoupled_nodes:                                                  # D034
+            flex = flexibility(cog.cl2, cog.cl1, cog.cl3, cog.cl4, sec, quirks)
+            delta = deflection(tip_mech.beta, flex, _load(tip_mech, weights[0], quirks), quirks)
+        else:
+            mechs = [tip_mech] + [cognate_mechanics(deg, lengths, alp, rpm, quirks, extender=r)
+                                  for r in positions[1:]]
+            loads = np.array([_load(m, w, quirks) for m, w in zip(mechs, weights)])
+            delta = _coupled_tip(mechs, loads, positions, cog_lengths, sec, quirks)
+    mech = tip_mech
     dx, dy = delta[:, 0].astype(np.float64), delta[:, 1].astype(np.float64)
     if not quirks.cognate_frame:                                                     # D025
         c, s = np.cos(mech.frame_angle), np.sin(mech.frame_angle)

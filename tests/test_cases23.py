@@ -4,7 +4,7 @@ import pytest
 
 from linkrepro import legacy
 from linkrepro.port import CORRECTED, Lengths, source_case1
-from linkrepro.port.ked_case1 import EXAMPLE, deflection, flexibility, source_mechanics
+from linkrepro.port.ked_case1 import EXAMPLE, cognate_mechanics, deflection, flexibility, source_mechanics
 from linkrepro.port.ked_case2 import LISTING as CASE2, beta2, case2_cognate, case2_source, joint_loads
 from linkrepro.port.ked_case3 import LISTING as CASE3, _coupled_tip, case3_source, node_positions
 
@@ -91,6 +91,23 @@ def test_case3_with_one_node_is_case1_with_the_extender_at_the_tip():
         case3 = case3_source(deg, n=1, quirks=q)
         np.testing.assert_allclose(case3["dx"], case1["dx"], rtol=1e-12)
         np.testing.assert_allclose(case3["dy"], case1["dy"], rtol=1e-12)
+
+
+@pytest.mark.parametrize("n", [1, 4])
+def test_cognate_segmented_extender_with_a_tip_load_is_the_same_beam(n):
+    """The same identity on the crossed cognate's extender (its direction pi - (gamma - t3))."""
+    deg = np.arange(0.0, 360.0, 30.0)
+    tip = cognate_mechanics(deg, rpm=300.0, quirks=CORRECTED)
+    cog = tip.extra["cognate"]
+    positions = node_positions(cog.cl2, n)
+    mechs = [tip] + [cognate_mechanics(deg, rpm=300.0, quirks=CORRECTED, extender=r) for r in positions[1:]]
+    loads = np.zeros((n, len(deg), 3))
+    loads[0] = np.stack([-tip.acc[:, 0], -tip.acc[:, 1], 0 * deg], -1) * (2.0 / (12 * 32.178))
+    lengths = Lengths(cog.cl1, cog.cl2, cog.cl3, cog.cl4, cog.cl5)
+    coupled = _coupled_tip(mechs, loads, positions, lengths, EXAMPLE.section, CORRECTED)
+    single = deflection(tip.beta, flexibility(cog.cl2, cog.cl1, cog.cl3, cog.cl4, EXAMPLE.section, CORRECTED),
+                        loads[0], CORRECTED)
+    np.testing.assert_allclose(coupled, single, rtol=1e-10, atol=1e-15)
 
 
 @pytest.mark.parametrize("n", [1, 3, 7])

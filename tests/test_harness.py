@@ -103,7 +103,7 @@ def test_appendix_scene_curves_and_speed_claim(tmp_path):
     structure is linear, so the 400/300 rpm peak ratio is (4/3)^2 for every curve."""
     from linkrepro.harness import appendix
     summary = appendix.run(tmp_path)
-    assert summary["curves"] == 24 and summary["max_engine_gap"] < 1e-12
-    assert len(list((tmp_path / appendix.NAME).glob("*.png"))) == 12
+    assert summary["curves"] == 36 and summary["max_engine_gap"] < 1e-12
+    assert len(list((tmp_path / appendix.NAME).glob("*.png"))) == 18
     claims = pd.read_csv(tmp_path / appendix.NAME / "claims.csv")
     np.testing.assert_allclose(claims["ratio_400_300"], 16 / 9, rtol=1e-4)
