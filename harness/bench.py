@@ -8,6 +8,7 @@ from __future__ import annotations
 import time
 
 import numpy as np
+import pandas as pd
 
 from .. import legacy
 from ..port import CORRECTED, PRINTED, cognate_case1, source_case1
@@ -72,40 +73,72 @@ CASE3_NS = (1, 2, 5, 10, 20, 50, 100, 200)
 CASE3_STEPS = (20.0, 10.0, 1.0)
 
 
-def case3_sweep(repeat: int, reference_n: int = 3200) -> list[str]:
-    """Case III: sub-elements n and angle step against time and against the converged tip
-    deflection.  The reference is the coupled model at ``reference_n``, refined once more by
-    Richardson extrapolation of the first-order lumping (2 d(2n) - d(n)).
-
-    Also which model each published table is within its printed half unit of.
-    """
-    lines = ["", "## Case III: sub-elements n and angle step, against the converged tip deflection", "",
-             f"Error: max |tip dx, dy - converged| (in) over 0-360 at the step; converged = Richardson "
-             f"extrapolation of the coupled model at n = {reference_n // 2}, {reference_n}. "
-             "Port timed for every n; legacy (the listing, n = 5, uncoupled) where the printed structure allows.", "",
-             "| step (deg) | n | coupled port s | coupled error (in) | listing-model port s | listing-model error (in) | legacy s (n=5) |",
-             "|---|---|---|---|---|---|---|"]
-    reps = max(1, repeat // 10)
+def case3_data(repeat: int, reference_n: int = 3200) -> pd.DataFrame:
+    """Case III sweep: one row per (angle step, n) with the coupled and the listing's model:
+    time (s, best of ``repeat``) and max |tip dx, dy - converged| (in).  Converged: the
+    coupled model at reference_n/2 and reference_n, Richardson-extrapolated (the node-end
+    lumping is first order: 2 d(2n) - d(n))."""
+    rows = []
+    listing_q = CASE3_LISTING.without("real4_storage")
     for step in CASE3_STEPS:
         deg = np.arange(0.0, 360.0 + 1e-9, step)
         fine = case3_source(deg, n=reference_n, quirks=CORRECTED)
         half = case3_source(deg, n=reference_n // 2, quirks=CORRECTED)
         converged = {k: 2 * fine[k] - half[k] for k in ("dx", "dy")}
-        listing_q = CASE3_LISTING.without("real4_storage")
+        t_leg = _best(lambda: legacy.case3_source(step_deg=step), repeat)
         for n in CASE3_NS:
-            t_c = _best(lambda: case3_source(deg, n=n, quirks=CORRECTED), reps)
-            got = case3_source(deg, n=n, quirks=CORRECTED)
-            err_c = max(float(np.max(np.abs(got[k] - converged[k]))) for k in ("dx", "dy"))
-            t_l = _best(lambda: case3_source(deg, n=n, quirks=listing_q), reps)
-            got_l = case3_source(deg, n=n, quirks=listing_q)
-            err_l = max(float(np.max(np.abs(got_l[k] - converged[k]))) for k in ("dx", "dy"))
-            t_leg = (f"{_best(lambda: legacy.case3_source(step_deg=step), reps):.5f}" if n == 5 else "")
-            lines.append(f"| {step:g} | {n} | {t_c:.5f} | {err_c:.2e} | {t_l:.5f} | {err_l:.2e} | {t_leg} |")
+            for model, quirks in (("coupled", CORRECTED), ("listing", listing_q)):
+                seconds = _best(lambda: case3_source(deg, n=n, quirks=quirks), repeat)
+                got = case3_source(deg, n=n, quirks=quirks)
+                err = max(float(np.max(np.abs(got[k] - converged[k]))) for k in ("dx", "dy"))
+                rows.append({"step_deg": step, "n": n, "model": model, "seconds": seconds, "error_in": err,
+                             "legacy_seconds_n5": t_leg if n == 5 else np.nan})
+    return pd.DataFrame(rows)
+
+
+def case3_sweep(repeat: int, data: pd.DataFrame | None = None) -> list[str]:
+    """The sweep as markdown, and which model each table needs."""
+    data = case3_data(max(1, repeat // 10)) if data is None else data
+    lines = ["", "## Case III: sub-elements n and angle step, against the converged tip deflection", "",
+             "Error: max |tip dx, dy - converged| (in) over 0-360 at the step; converged = Richardson "
+             "extrapolation of the coupled model at n = 1600, 3200. Port timed for every n; legacy (the "
+             "listing, n = 5, uncoupled) where the printed structure allows.", "",
+             "| step (deg) | n | coupled port s | coupled error (in) | listing-model port s | listing-model error (in) | legacy s (n=5) |",
+             "|---|---|---|---|---|---|---|"]
+    for (step, n), g in data.groupby(["step_deg", "n"], sort=False):
+        c, li = g[g["model"] == "coupled"].iloc[0], g[g["model"] == "listing"].iloc[0]
+        leg = f"{c.legacy_seconds_n5:.5f}" if n == 5 else ""
+        lines.append(f"| {step:g} | {n} | {c.seconds:.5f} | {c.error_in:.2e} | {li.seconds:.5f} | "
+                     f"{li.error_in:.2e} | {leg} |")
     lines += ["", "The listing's model keeps the tip's own load only (D034) and lumps the extender up to each "
               "node (D033): its tip deflection does not depend on n, and its error against the converged "
               "coupled model does not shrink as n grows.", ""]
     lines += table_model_needs()
     return lines
+
+
+def plot_case3(data: pd.DataFrame, path) -> None:
+    """Error against n and against time, per angle step and model."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, (left, right) = plt.subplots(1, 2, figsize=(10, 3.8))
+    for (step, model), g in data.groupby(["step_deg", "model"]):
+        style = "-o" if model == "coupled" else "--x"
+        left.loglog(g["n"], g["error_in"], style, ms=3, label=f"{model}, {step:g} deg")
+        right.loglog(g["seconds"], g["error_in"], style, ms=3, label=f"{model}, {step:g} deg")
+    for ax, xlabel in ((left, "sub-elements n"), (right, "port time (s)")):
+        ax.axhline(0.0005, color="gray", lw=0.8, ls=":")
+        ax.set_ylim(bottom=1e-4)
+        ax.set_xlabel(xlabel)
+        ax.set_ylabel("max tip error (in)")
+        ax.grid(alpha=0.3, which="both")
+    left.legend(fontsize=7)
+    left.set_title("Case III: error against n (dotted: printed half unit)", fontsize=9)
+    right.set_title("Case III: error against time", fontsize=9)
+    fig.tight_layout()
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
 
 
 def table_model_needs() -> list[str]:

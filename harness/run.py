@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pandas as pd
 
-from . import appendix, readings, register as register_mod
+from . import appendix, bench, readings, register as register_mod
 from .diff import diff_scene, summary
 from .engines import ENGINES, PrintedProgramError
 from .published_tables import PublishedTable
@@ -48,7 +48,9 @@ def run_scene(name: str, out_dir: Path, measure_readings: bool = True) -> dict:
 
 
 def reproduce(names: list[str] | None, out_dir: Path) -> list[dict]:
-    """Run the named scenes (all by default) and write DIR/report.md over them."""
+    """Run the named scenes (all by default) and write DIR/report.md over them; with all
+    scenes (or ali1977-table3) also the Case III speed-against-error sweep."""
+    measure_convergence = not names or "ali1977-table3" in names
     names = names or list(SCENES) + [appendix.NAME]
     out_dir.mkdir(parents=True, exist_ok=True)
     start = time.perf_counter()
@@ -67,6 +69,16 @@ def reproduce(names: list[str] | None, out_dir: Path) -> list[dict]:
             secs = item["timings"].get(engine, float("nan"))
             lines.append(f"| {engine} | " + " | ".join(str(v) for v in row) + f" | {secs:.4f} |")
         lines += [f"\n**{f}**" for f in item["failures"]] + [""]
+    if measure_convergence:
+        data = bench.case3_data(repeat=1)
+        data.to_csv(out_dir / "case3_convergence.csv", index=False, float_format="%.6g")
+        bench.plot_case3(data, out_dir / "case3_convergence.png")
+        (out_dir / "case3_convergence.md").write_text(
+            "# Case III: speed against error\n" + "\n".join(bench.case3_sweep(1, data))
+            + "\n\n![case3 convergence](case3_convergence.png)\n")
+        lines += ["## [Case III: speed against error](case3_convergence.md)", "",
+                  "Sub-elements n and angle step against the converged distributed-mass answer, and which "
+                  "mass model each table needs (timings from this one run).", ""]
     if curves is not None:
         lines += [f"## [{curves['scene']}]({curves['scene']}/report.md)", "", curves["title"], "",
                   f"{curves['curves']} of 36 curves, engine against engine (no published numbers); largest "
