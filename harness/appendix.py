@@ -24,6 +24,7 @@ from ..port.ked_case2 import case2_cognate, case2_source  # noqa: E402
 from ..port.ked_case3 import COGNATE_LISTING as CASE3_COG  # noqa: E402
 from ..port.ked_case3 import LISTING as CASE3  # noqa: E402
 from ..port.ked_case3 import case3_cognate, case3_source  # noqa: E402
+from .report import finish_plot  # noqa: E402
 
 NAME = "ali1977-appendixA"
 TITLE = "Ali (1977) Appendix A: elastic deflections against input-link rotation, 300 and 400 rpm"
@@ -87,16 +88,9 @@ def _plot(curves: pd.DataFrame, target: Path) -> list[Path]:
         for (rpm, engine), g in group.groupby(["rpm", "engine"]):
             style = dict(ls="-", lw=1.5) if engine == "legacy" else dict(ls="--", lw=1.0, color="k")
             ax.plot(g["input_deg"], g["value"], label=f"{engine}, {rpm:g} rpm", **style)
-        ax.set_xlabel("input-link rotation (deg)")
-        ax.set_ylabel(QUANTITIES[q])
-        ax.set_title(f"{mech.upper()} MECHANISM - CASE {case}: {q}", fontsize=10)
-        ax.grid(alpha=0.3)
-        ax.legend(fontsize=7)
-        fig.tight_layout()
-        path = target / f"case{case}_{mech}_{q}.png"
-        fig.savefig(path, dpi=90)
-        plt.close(fig)
-        paths.append(path)
+        paths.append(finish_plot(fig, ax, "input-link rotation (deg)", QUANTITIES[q],
+                                 f"{mech.upper()} MECHANISM - CASE {case}: {q}",
+                                 target / f"case{case}_{mech}_{q}.png"))
     return paths
 
 

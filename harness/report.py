@@ -42,17 +42,21 @@ def plot_scene(scene, published, results: dict[str, pd.DataFrame], outdir: Path)
         for engine, frame in results.items():
             if frame[col].notna().any():
                 ax.plot(frame[scene.key], frame[col], label=engine, **STYLE.get(engine, {}))
-        ax.set_xlabel(scene.key)
-        ax.set_ylabel(f"{col} (in)")
-        ax.set_title(f"{scene.name}: {col}", fontsize=10)
-        ax.grid(alpha=0.3)
-        ax.legend(fontsize=7)
-        fig.tight_layout()
-        path = outdir / f"{col}.png"
-        fig.savefig(path, dpi=90)
-        plt.close(fig)
-        paths.append(path)
+        paths.append(finish_plot(fig, ax, scene.key, f"{col} (in)", f"{scene.name}: {col}", outdir / f"{col}.png"))
     return paths
+
+
+def finish_plot(fig, ax, xlabel: str, ylabel: str, title: str, path: Path) -> Path:
+    """Label, grid, legend, save as PNG and close: the one style of every curve plot."""
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title(title, fontsize=10)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
+    return path
 
 
 def registered_by_kind(diff: pd.DataFrame, register: dict[str, Deviation]) -> pd.DataFrame:

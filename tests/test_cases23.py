@@ -143,3 +143,24 @@ def test_case3_rejects_bad_node_counts():
         case3_source(DEG[:3], n=0)
     with pytest.raises(ValueError):
         case3_source(DEG[:3], n=2.5)
+
+
+@pytest.mark.parametrize("legacy_func,port_func", [
+    (legacy.case2_source, lambda **kw: case2_source(DEG[::20], **kw)),
+    (legacy.case2_cognate, lambda **kw: case2_cognate(DEG[::20], **kw)),
+    (legacy.case3_source, lambda **kw: case3_source(DEG[::20], **kw))])
+def test_cases23_typed_errors_from_both_engines(legacy_func, port_func):
+    from linkrepro import AssemblyError
+    with pytest.raises(AssemblyError):
+        legacy_func(l5=100.0)
+    with pytest.raises(AssemblyError):
+        port_func(lengths=Lengths(10.0, 10.0, 30.0, 25.0, 100.0))
+    with pytest.raises(ValueError):
+        legacy_func(density=-0.1)
+    with pytest.raises(ValueError):
+        port_func(density=float("nan"))
+
+
+def test_legacy_case3_needs_room_for_its_five_nodes():
+    with pytest.raises(ValueError, match="nodes"):
+        legacy.case3_source(l2=8.0)
