@@ -33,7 +33,7 @@ STEP = 10.0
 DEG = np.arange(0.0, 360.0 + 1e-9, STEP)
 
 #: (case, mechanism) -> (legacy function, port function); the Case II cognate's missing page
-#: and the whole Case III cognate are reconstructions (D037); the latter has no legacy build.
+#: and the whole Case III cognate are reconstructions (D037).
 CURVES = {
     ("I", "source"): (lambda rpm: legacy.case1_source(rpm=rpm, step_deg=STEP),
                       lambda rpm: source_case1(DEG, rpm=rpm, quirks=PRINTED)),
@@ -45,7 +45,8 @@ CURVES = {
                         lambda rpm: case2_cognate(DEG, rpm=rpm, quirks=CASE2_COG)),
     ("III", "source"): (lambda rpm: legacy.case3_source(rpm=rpm, step_deg=STEP),
                         lambda rpm: case3_source(DEG, rpm=rpm, quirks=CASE3)),
-    ("III", "cognate"): (None, lambda rpm: case3_cognate(DEG, rpm=rpm, quirks=CASE3_COG)),
+    ("III", "cognate"): (lambda rpm: legacy.case3_cognate(rpm=rpm, step_deg=STEP),
+                         lambda rpm: case3_cognate(DEG, rpm=rpm, quirks=CASE3_COG)),
 }
 QUANTITIES = {"dx": "elastic X displacement of P (in)", "dy": "elastic Y displacement of P (in)",
               "rot": "elastic rotation in Z (rad)"}
@@ -98,8 +99,6 @@ def _claims(curves: pd.DataFrame) -> pd.DataFrame:
     """Chapter V: (1) 100 rpm more nearly doubles the deflections; (2) the maxima fall in the
     second half of the cycle.  Per curve pair, legacy engine."""
     leg = curves[curves["engine"] == "legacy"]
-    leg = pd.concat([leg, curves[(curves["engine"] == "port_printed") & (curves["case"] == "III")
-                                 & (curves["mechanism"] == "cognate")]])
     rows = []
     for (case, mech, q), g in leg.groupby(["case", "mechanism", "quantity"], sort=False):
         peak = {rpm: g[g["rpm"] == rpm].loc[lambda d: d["value"].abs().idxmax()] for rpm in SPEEDS}
@@ -124,11 +123,11 @@ def _report(curves, claims, gap, timings, missing, plots) -> str:
              "(legacy and port with the listings' quirks) and recomputes chapter V's two claims about the "
              "curves. Inputs: each listing as printed, the speed set to 300 and 400 rpm, angles every 10 deg.", "",
              f"- curves produced: {n} of 36; the Case II cognate's are its listing with the missing page "
-             f"reconstructed, the Case III cognate's a port-only reconstruction (D037); "
+             f"reconstructed, the Case III cognate's a reconstruction (D037); "
              f"not available: {', '.join(missing) or 'none'}",
              f"- largest |port - legacy| over all curve points: {gap:.3g} (Case III rotations excluded, D035)",
              f"- wall time: legacy {timings['legacy']:.3f} s, port {timings['port_printed']:.3f} s", "",
-             "## Chapter V's claims, recomputed (legacy; port for the Case III cognate)", "",
+             "## Chapter V's claims, recomputed (legacy)", "",
              "1. 'with an increase of 100 rpm ... the elastic deflections were nearly doubled': the inertia loads "
              "grow as the speed squared, (400/300)^2 = 1.78.",
              "2. 'Maximum deflections occur in the second half of the cycle'.", "",

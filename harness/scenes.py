@@ -155,13 +155,13 @@ ALI1977_TABLE3 = Scene(
     key="input_deg",
     inputs=(COMMON_INPUTS + "300 rpm, ALP=PI/3; the extender's weight at 5 nodes (Appendix D). "
             "Rigid and source columns: the Case III source listing (the only program Appendix D "
-            "prints). port_corrected: the coupled 5-segment model. Cognate columns: a port-only "
+            "prints). port_corrected: the coupled 5-segment model. Cognate columns: a "
             "reconstruction, D037."),
     printed=lambda: _ked_printed("ali1977_case3_source", None),
-    legacy=lambda: _with_source_rigid(legacy.case3_source(step_deg=20.0), NOT_PRODUCED),
+    legacy=lambda: _with_source_rigid(legacy.case3_source(step_deg=20.0), legacy.case3_cognate(step_deg=20.0)),
     port=_table3_port,
-    notes=["Cognate columns: a port-only RECONSTRUCTION (no listing exists, D037); legacy does not "
-           "give them."],
+    notes=["Cognate columns: a RECONSTRUCTION (no listing exists, D037), in src/ and in the port; "
+           "it does not reproduce them."],
 )
 
 SCENES: dict[str, Scene] = {s.name: s for s in [ALI1977_TABLE1, ALI1977_TABLE2, ALI1977_TABLE3]}

@@ -31,7 +31,7 @@ CA_PRINTED = float(np.float32(0.1963495408))          # in^2
 ME_PRINTED = float(np.float32(10000000.0))            # psi
 MI_PRINTED = float(np.float32(0.0030679615))          # in^4
 
-__all__ = ["case1_source", "case1_cognate", "case2_source", "case2_cognate", "case3_source", "gmtra", "mprd", "loc",
+__all__ = ["case1_source", "case1_cognate", "case2_source", "case2_cognate", "case3_source", "case3_cognate", "gmtra", "mprd", "loc",
            "angle_grid"]
 
 #: DNTY=0.098 (lb/in^3, aluminium) as the REAL*4 literal holds it (Cases II, III).
@@ -175,6 +175,20 @@ def case3_source(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_PR
     out = {"deg": deg, "xp": xp, "yp": yp, "dx": nodes[:, 0, 0], "dy": nodes[:, 0, 1],
            "rot": nodes[:, 0, 2], "nodes": nodes}
     _raise_on_status(istat, deg, {"xp": xp, "yp": yp, "nodes": nodes}, "KED3S")
+    return out
+
+
+def case3_cognate(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_PRINTED,
+                  rpm=300.0, density=DENSITY_PRINTED, area=CA_PRINTED, modulus=ME_PRINTED,
+                  inertia=MI_PRINTED, step_deg=20.0) -> dict[str, np.ndarray]:
+    """A RECONSTRUCTION (D037): Appendix D prints no Case III cognate program.  The Case I
+    cognate listing with the Case III source listing's changes (the tip node's weight
+    density*area*CL2, double-precision loads, E*I bending).  Returns as case1_cognate."""
+    n = _check_inputs((l1, l2, l3, l4, l5), alp, rpm, density, area, modulus, inertia, step_deg)
+    deg, xp, yp, cxp, cyp, dx, dy, rot, istat = _f.ked3c(l1, l2, l3, l4, l5, alp, rpm, density, area,
+                                                         modulus, inertia, step_deg, n)
+    out = {"deg": deg, "xp": xp, "yp": yp, "cxp": cxp, "cyp": cyp, "dx": dx, "dy": dy, "rot": rot}
+    _raise_on_status(istat, deg, {k: v for k, v in out.items() if k != "deg"}, "KED3C")
     return out
 
 

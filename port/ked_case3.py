@@ -143,7 +143,8 @@ def case3_cognate(deg, n: int = 5, lengths: Lengths = EXAMPLE.lengths, alp: floa
                   rpm: float = EXAMPLE.rpm, density: float = DENSITY,
                   section: Section = EXAMPLE.section, quirks: Quirks = COGNATE_LISTING) -> dict:
     """Case III, crossed cognate: a RECONSTRUCTION (D037: Appendix D prints no cognate
-    program): the source listing's node scheme on the Case I cognate (the listing's
+    program; the same reconstruction is legacy/src/ali1977_case3_cognate.f): the source
+    listing's node scheme on the Case I cognate (the listing's
     quirks: the tip block, the cognate extender's weight at the path point) or, with
     D033/D034 off, the coupled n-segment model along the cognate's extender.
     Returns ``xp, yp``, ``dx, dy`` (in), ``rot`` (rad)."""

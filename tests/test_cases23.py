@@ -6,7 +6,7 @@ from linkrepro import legacy
 from linkrepro.port import CORRECTED, Lengths, source_case1
 from linkrepro.port.ked_case1 import EXAMPLE, cognate_mechanics, deflection, flexibility, source_mechanics
 from linkrepro.port.ked_case2 import LISTING as CASE2, beta2, case2_cognate, case2_source, joint_loads
-from linkrepro.port.ked_case3 import LISTING as CASE3, _coupled_tip, case3_source, node_positions
+from linkrepro.port.ked_case3 import LISTING as CASE3, _coupled_tip, case3_cognate, case3_source, node_positions
 
 DEG = np.arange(0.0, 361.0, 1.0)
 AREA, DENSITY = EXAMPLE.section.area, 0.098
@@ -22,6 +22,12 @@ def test_case2_cognate_reconstruction_port_equals_legacy():
     """The reconstructed page (D037) is the same in the FORTRAN and in the port."""
     port, leg = case2_cognate(DEG), legacy.case2_cognate(step_deg=1.0)
     for key in ("xp", "yp", "cxp", "cyp", "dx", "dy", "rot"):
+        np.testing.assert_allclose(port[key], leg[key], rtol=1e-9, atol=1e-300, err_msg=key)
+
+
+def test_case3_cognate_reconstruction_port_equals_legacy():
+    port, leg = case3_cognate(DEG), legacy.case3_cognate(step_deg=1.0)
+    for key in ("xp", "yp", "dx", "dy", "rot"):
         np.testing.assert_allclose(port[key], leg[key], rtol=1e-9, atol=1e-300, err_msg=key)
 
 
