@@ -1,0 +1,108 @@
+"""Python face of Rahman (1996), Appendix B: the CSSP balancing program, INVERSE, our QPROG.
+
+``cssp`` runs the main program (legacy/src/rahman1996_cssp_main.f, a SUBROUTINE since
+D051) over its 37 crank positions, 0..360 deg in 10-deg steps, and returns every quantity
+of Tables 5.1-5.7.  Defaults are the printed PARAMETERs (section 5.2).
+
+Units as printed: inch, lbf, second; masses lb*s^2/in; inertias lb*s^2*in; angles deg.
+Errors: ``ValueError`` for bad parameters, ``ConvergenceError`` when the printed
+Newton-Raphson gives up after 150 iterations (the listing's STOP), ``SingularPositionError``
+when INVERSE meets an exactly zero pivot (its STOP), ``QPError`` when QPROG fails.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..errors import ConvergenceError, SingularPositionError
+from . import _rahman1996 as _f
+
+#: TABLE columns of ``cssp``: (table, quantity) in the order the FORTRAN fills them.
+CSSP_COLUMNS = [("5_2", "before"), ("5_2", "after"), ("5_3", "before"), ("5_3", "after"),
+                ("5_4", "before"), ("5_4", "after"), ("5_5", "before"), ("5_5", "after"),
+                ("5_6", "before"), ("5_6", "after"), ("5_7", "before"), ("5_7", "after")]
+#: rows of the inertia output: (link, quantity) of Table 5.1
+INERTIA_ROWS = [("crank", "i_xx"), ("crank", "i_yy"), ("crank", "i_zz"),
+                ("connecting_rod", "i_xx"), ("connecting_rod", "i_yy"), ("connecting_rod", "i_zz")]
+
+
+class QPError(ArithmeticError):
+    """QPROG could not solve: inconsistent constraints or the iteration limit."""
+
+
+def cssp(a1=2.0, a2=8.0, a4=1.0, alpha4_deg=250.0, s1=0.4, rpm=3000.0, solution=None) -> dict:
+    """Run the CSSP program (both passes: objective, QPROG, comparison) once.
+
+    a1, a2, a4, s1 in inches, alpha4_deg in degrees, rpm the crank speed.  ``solution``
+    (9 masses, lb*s^2/in) replaces QPROG's answer for the "after" columns (D055);
+    by default QPROG's own is used.  Returns ``table`` (37 x 12, columns CSSP_COLUMNS,
+    rows crank 0..360 deg), ``solution`` (9), ``inertia`` (6 x 2: before, after; rows
+    INERTIA_ROWS), ``hessian`` (9 x 9, h = 2*OF, REAL*4 as QPROG gets it), ``diag``.
+    """
+    for name, value in (("a1", a1), ("a2", a2), ("rpm", rpm)):
+        if not (math.isfinite(value) and value > 0):
+            raise ValueError(f"{name} must be positive and finite, got {value!r}")
+    for name, value in (("a4", a4), ("alpha4_deg", alpha4_deg), ("s1", s1)):
+        if not math.isfinite(value):
+            raise ValueError(f"{name} must be finite, got {value!r}")
+    sol_in = np.zeros(9, dtype=np.float32)
+    if solution is not None:
+        sol_in = np.asarray(solution, dtype=np.float32).ravel()
+        if sol_in.shape != (9,) or not np.all(np.isfinite(sol_in)):
+            raise ValueError("solution must hold 9 finite masses")
+    table, sol, inert, hout, diag, istat, fail_deg = _f.cssp(
+        a1, a2, a4, alpha4_deg, s1, rpm, int(solution is not None), sol_in)
+    if istat == 1:
+        raise ConvergenceError("CSSP: Newton-Raphson failed after 150 iterations", float(fail_deg))
+    if istat == 2:
+        raise SingularPositionError("CSSP: INVERSE met a zero pivot (MATRIX IS SINGULAR)", float(fail_deg))
+    if istat == 3:
+        raise QPError("CSSP: QPROG could not solve the balancing problem")
+    return {"table": table, "solution": sol.astype(np.float64), "inertia": inert,
+            "hessian": hout.astype(np.float64), "diag": float(diag)}
+
+
+def inverse(s) -> np.ndarray:
+    """The printed INVERSE: 5 x 5 Gauss-Jordan, row exchange only on an exactly zero pivot.
+
+    Raises ``SingularPositionError`` where the listing prints MATRIX IS SINGULAR and STOPs.
+    """
+    s = np.asarray(s, dtype=np.float64)
+    if s.shape != (5, 5):
+        raise ValueError(f"INVERSE is written for 5 x 5 matrices, got {s.shape}")
+    b = _f.inverse(np.asfortranarray(s))
+    if _f.inverr_get():
+        raise SingularPositionError("INVERSE: MATRIX IS SINGULAR")
+    return b
+
+
+def qprog(h, g, a=None, b=None, neq: int = 0) -> dict:
+    """Our QPROG (IMSL's calling convention, Goldfarb-Idnani; register D050).
+
+    Minimizes g'x + x'Hx/2 subject to a[:neq] x = b[:neq] and a[neq:] x >= b[neq:].
+    Returns ``sol``, ``diag`` (the multiple of the identity added to H, 0 when H is
+    positive definite), ``active`` (0-based constraint indices) and ``multipliers``.
+    """
+    h = np.asarray(h, dtype=np.float64)
+    g = np.asarray(g, dtype=np.float64).ravel()
+    n = g.size
+    if h.shape != (n, n) or not (np.all(np.isfinite(h)) and np.all(np.isfinite(g))):
+        raise ValueError("h must be a finite n x n matrix and g a finite n-vector")
+    a = np.zeros((0, n)) if a is None else np.atleast_2d(np.asarray(a, dtype=np.float64))
+    b = np.zeros(0) if b is None else np.asarray(b, dtype=np.float64).ravel()
+    if a.shape[1] != n or a.shape[0] != b.size or not 0 <= neq <= b.size:
+        raise ValueError("a must be m x n with b of length m, and 0 <= neq <= m")
+    if n > 60 or b.size > 200:
+        raise ValueError("QPROG here holds at most 60 variables and 200 constraints")
+    a_f = np.asfortranarray(np.vstack([a, np.zeros((1, n))]))        # LDA >= 1
+    b_f = np.concatenate([b, [0.0]])
+    diag, sol, nact, iact, lam = _f.dqprog(b.size, neq, a_f, b_f, g, np.asfortranarray(h))
+    status = int(_f.qpstat_get())
+    if status == 1:
+        raise QPError("QPROG: the constraints are inconsistent")
+    if status == 2:
+        raise QPError("QPROG: iteration limit reached")
+    if status == 3:
+        raise ValueError("QPROG: bad arguments")
+    return {"sol": sol, "diag": float(diag), "active": iact[:nact] - 1, "multipliers": lam[:nact]}
