@@ -20,17 +20,19 @@ def main(argv: list[str] | None = None) -> int:
 
     from .scenes import SCENES
     if args.command == "scenes":
-        from . import appendix
+        from . import appendix, rahman1996_figures
         for scene in SCENES.values():
-            print(f"{scene.name:20s} {scene.title}")
-        print(f"{appendix.NAME:20s} {appendix.TITLE} (engine against engine)")
+            print(f"{scene.name:22s} {scene.title}")
+        print(f"{appendix.NAME:22s} {appendix.TITLE} (engine against engine)")
+        print(f"{rahman1996_figures.NAME:22s} Rahman (1996) Figures 5.1-5.6 and the section 5.3 percentages")
         return 0
     if args.command == "reproduce":
         from .run import reproduce, unexplained_count
-        from . import appendix
-        unknown = [s for s in args.scenes if s not in SCENES and s != appendix.NAME]
+        from . import appendix, rahman1996_figures
+        extra = [appendix.NAME, rahman1996_figures.NAME]
+        unknown = [s for s in args.scenes if s not in SCENES and s not in extra]
         if unknown:
-            parser.error(f"unknown scene(s): {', '.join(unknown)}; known: {', '.join([*SCENES, appendix.NAME])}")
+            parser.error(f"unknown scene(s): {', '.join(unknown)}; known: {', '.join([*SCENES, *extra])}")
         done = reproduce(args.scenes, args.out)
         for item in done:
             print(f"{item['scene']}:")

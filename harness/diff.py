@@ -14,10 +14,9 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from ..port import PRINTED
 from .published_tables import PublishedTable
 from .register import Deviation, by_quirk
-from .scenes import Scene
+from .scene import Scene
 
 STATUSES = ("match", "registered", "unexplained", "not-produced")
 
@@ -26,11 +25,12 @@ def quirk_effects(scene: Scene, published: PublishedTable, base: pd.DataFrame) -
     """For each quirk: a boolean frame, True where switching it off alone moves a cell
     of the PRINTED port by more than that cell's half unit."""
     half = published.half_unit
+    printed = scene.quirks[0]
     effects = {}
-    for name in PRINTED.names():
-        moved = scene.port(PRINTED.only(name, False))
-        delta = (moved[scene.columns] - base[scene.columns]).abs()
-        effects[name] = delta > half[scene.columns].to_numpy()
+    for name in printed.names():
+        moved = scene.port(printed.only(name, False))
+        delta = (moved[scene.values] - base[scene.values]).abs()
+        effects[name] = delta > half[scene.values].to_numpy()
     return effects
 
 
@@ -42,15 +42,14 @@ def diff_scene(scene: Scene, published: PublishedTable, results: dict[str, pd.Da
     effects = None
     if "port_corrected" in results:
         base = results.get("port_printed")
-        effects = quirk_effects(scene, published, base if base is not None else scene.port(PRINTED))
+        effects = quirk_effects(scene, published, base if base is not None else scene.port(scene.quirks[0]))
     quirk_ids = {name: entry.id for name, entry in by_quirk(register).items()}
     rows = []
     for engine, frame in results.items():
         for i in range(len(pub_val)):
-            key = pub_val.at[i, scene.key]
-            for col in scene.columns:
-                if col == scene.key:
-                    continue
+            key = (pub_val.at[i, scene.key] if isinstance(scene.key, str)
+                   else "/".join(pub_text.at[i, k] for k in scene.keys))
+            for col in scene.values:
                 value = float(frame.at[i, col])
                 target, tol = float(pub_val.at[i, col]), float(half.at[i, col])
                 ref = float(legacy.at[i, col]) if legacy is not None else np.nan
@@ -64,11 +63,14 @@ def diff_scene(scene: Scene, published: PublishedTable, results: dict[str, pd.Da
                     status = "not-produced"
                 elif err <= tol * (1.0 + 1e-9):
                     status = "match"
+                elif scene.floor_id and err <= scene.rel_floor * abs(target):
+                    ids.append(scene.floor_id)
+                    status = "registered"
                 elif ids:
                     status = "registered"
                 else:
                     status = "unexplained"
-                rows.append({"scene": scene.name, "engine": engine, scene.key: key, "column": col,
+                rows.append({"scene": scene.name, "engine": engine, scene.key_name: key, "column": col,
                              "published_text": pub_text.at[i, col], "published": target,
                              "value": value, "abs_diff": err, "half_unit": tol, "status": status,
                              "register_ids": " ".join(sorted(set(ids))) if status != "match" else "",

@@ -24,25 +24,30 @@ class PrintedProgramError(RuntimeError):
     """A printed program could not be run or its output could not be read."""
 
 
-def run_printed(program: str, timeout_s: float = 60.0) -> pd.DataFrame:
-    """Run one printed program; return the path point's rows (deg, dx, dy, rot).
-
-    Cases I and II WRITE with FORMAT 200, (1H0,5X,F12.6,8X,F12.6,8X,F12.6,8X,F12.6):
-    a carriage-control '0' then four numbers.  Case III's FORMAT 500 starts a page
-    ('1') per angle with the angle and the tip's three values, then the other nodes.
-    """
+def run_program(program: str, cwd: Path | None = None, timeout_s: float = 60.0) -> str:
+    """Run one printed program (in ``cwd``, for programs that OPEN files); return its stdout."""
     exe = BIN_DIR / program
     if not exe.exists():
         raise PrintedProgramError(f"printed program {program!r} is not built ({exe} missing); "
                                   "reinstall the package")
     try:
         done = subprocess.run([str(exe)], capture_output=True, text=True, timeout=timeout_s,
-                              stdin=subprocess.DEVNULL)
+                              stdin=subprocess.DEVNULL, cwd=cwd)
     except subprocess.TimeoutExpired as exc:
         raise PrintedProgramError(f"{program} did not finish in {timeout_s} s") from exc
     if done.returncode != 0:
         raise PrintedProgramError(f"{program} exited with {done.returncode}: {done.stderr.strip()}")
-    frame = parse_printed_output(done.stdout)
+    return done.stdout
+
+
+def run_printed(program: str, timeout_s: float = 60.0) -> pd.DataFrame:
+    """Run one Ali (1977) printed program; return the path point's rows (deg, dx, dy, rot).
+
+    Cases I and II WRITE with FORMAT 200, (1H0,5X,F12.6,8X,F12.6,8X,F12.6,8X,F12.6):
+    a carriage-control '0' then four numbers.  Case III's FORMAT 500 starts a page
+    ('1') per angle with the angle and the tip's three values, then the other nodes.
+    """
+    frame = parse_printed_output(run_program(program, timeout_s=timeout_s))
     if frame.empty:
         raise PrintedProgramError(f"{program} printed no result line")
     return frame

@@ -36,6 +36,12 @@ class PublishedTable:
         """Half a unit of each cell's last printed digit."""
         def half(cell: str) -> float:
             cell = cell.strip()
-            decimals = len(cell.split(".")[1]) if "." in cell else 0
+            try:
+                float(cell)
+            except ValueError:
+                return np.nan                                          # a text cell: a row name
+            mantissa, _, exponent = cell.upper().partition("E")      # 1.946666E-04
+            decimals = len(mantissa.split(".")[1]) if "." in mantissa else 0
+            decimals -= int(exponent) if exponent else 0
             return 0.5 * 10.0 ** (-decimals) if cell else np.nan
         return self.text.map(half)

@@ -34,9 +34,9 @@ def plot_scene(scene, published, results: dict[str, pd.DataFrame], outdir: Path)
     """One PNG per quantity: published points and every engine against the key column."""
     pub = published.values
     paths = []
-    for col in scene.columns:
-        if col == scene.key:
-            continue
+    if not isinstance(scene.key, str):
+        return paths                       # rows named by text (Table 5.1): the CSVs say it all
+    for col in scene.values:
         fig, ax = plt.subplots(figsize=(6.4, 3.6))
         ax.plot(pub[scene.key], pub[col], "ko", ms=4, label="published")
         for engine, frame in results.items():
@@ -105,7 +105,7 @@ def scene_report(scene, diff: pd.DataFrame, timings: dict[str, float], register:
     if unexplained.empty:
         out.append("None.")
     else:
-        out.append(_md_table(unexplained.set_index("engine")[[scene.key, "column", "published_text", "value"]],
+        out.append(_md_table(unexplained.set_index("engine")[[scene.key_name, "column", "published_text", "value"]],
                              "{:.6g}"))
     if extra:
         out += ["", extra]

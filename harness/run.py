@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pandas as pd
 
-from . import appendix, bench, readings, register as register_mod
+from . import appendix, bench, rahman1996_figures, readings, register as register_mod
 from .diff import diff_scene, summary
 from .engines import ENGINES, PrintedProgramError
 from .published_tables import PublishedTable
@@ -51,11 +51,12 @@ def reproduce(names: list[str] | None, out_dir: Path) -> list[dict]:
     """Run the named scenes (all by default) and write DIR/report.md over them; with all
     scenes (or ali1977-table3) also the Case III speed-against-error sweep."""
     measure_convergence = not names or "ali1977-table3" in names
-    names = names or list(SCENES) + [appendix.NAME]
+    names = names or list(SCENES) + [appendix.NAME, rahman1996_figures.NAME]
     out_dir.mkdir(parents=True, exist_ok=True)
     start = time.perf_counter()
-    done = [run_scene(name, out_dir) for name in names if name != appendix.NAME]
+    done = [run_scene(name, out_dir) for name in names if name not in (appendix.NAME, rahman1996_figures.NAME)]
     curves = appendix.run(out_dir) if appendix.NAME in names else None
+    figures = rahman1996_figures.run(out_dir) if rahman1996_figures.NAME in names else None
     total = time.perf_counter() - start
     lines = ["# linkrepro: reproduction report", "",
              "Each published cell, for each engine: `match` (within half a unit of the printed last "
@@ -83,6 +84,9 @@ def reproduce(names: list[str] | None, out_dir: Path) -> list[dict]:
         lines += [f"## [{curves['scene']}]({curves['scene']}/report.md)", "", curves["title"], "",
                   f"{curves['curves']} of 36 curves, engine against engine (no published numbers); largest "
                   f"|port - legacy| {curves['max_engine_gap']:.3g}; {', '.join(curves['missing']) or 'every curve from both engines'}.", ""]
+    if figures is not None:
+        lines += [f"## [{figures['scene']}]({figures['scene']}/report.md)", "", figures["title"],
+                  "(recomputed from every engine beside the printed text).", ""]
     lines.append(f"Total wall time of this reproduce run: {total:.2f} s.")
     (out_dir / "report.md").write_text("\n".join(lines) + "\n")
     return done

@@ -3,9 +3,6 @@ produces the table, and the table's columns (the published table's, exactly).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-from typing import Callable
-
 import numpy as np
 import pandas as pd
 
@@ -18,34 +15,11 @@ from ..port.ked_case3 import COGNATE_LISTING as CASE3_COGNATE
 from ..port.ked_case3 import LISTING as CASE3_LISTING
 from ..port.ked_case3 import case3_cognate, case3_source
 from .engines import run_printed
+from .scene import Scene
+from .scenes_rahman1996 import RAHMAN1996_SCENES
 
 KED_COLUMNS = ["input_deg", "rigid_x", "rigid_y", "src_dx", "src_dy", "src_xnew", "src_ynew",
                   "cog_dx", "cog_dy", "cog_xnew", "cog_ynew"]
-
-
-@dataclass(frozen=True)
-class Scene:
-    name: str
-    title: str
-    table: str                                   # harness/published/<table>.csv
-    columns: list[str]
-    key: str
-    inputs: str                                  # what the engines are run with, in words
-    printed: Callable[[], pd.DataFrame]
-    legacy: Callable[[], pd.DataFrame]
-    port: Callable[[Quirks], pd.DataFrame]      # quirks restricted to each listing's own (&)
-    notes: list[str] = field(default_factory=list)
-
-    def run(self, engine: str) -> pd.DataFrame:
-        if engine == "printed":
-            return self.printed()
-        if engine == "legacy":
-            return self.legacy()
-        if engine == "port_printed":          # each program with its own listing's quirks
-            return self.port(PRINTED)
-        if engine == "port_corrected":
-            return self.port(CORRECTED)
-        raise ValueError(f"unknown engine {engine!r}")
 
 
 TABLE_DEG = np.arange(0.0, 361.0, 20.0)
@@ -164,7 +138,8 @@ ALI1977_TABLE3 = Scene(
            "it does not reproduce them."],
 )
 
-SCENES: dict[str, Scene] = {s.name: s for s in [ALI1977_TABLE1, ALI1977_TABLE2, ALI1977_TABLE3]}
+SCENES: dict[str, Scene] = {s.name: s for s in [ALI1977_TABLE1, ALI1977_TABLE2, ALI1977_TABLE3,
+                                                 *RAHMAN1996_SCENES]}
 
 
 def get(name: str) -> Scene:

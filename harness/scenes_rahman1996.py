@@ -1,0 +1,144 @@
+"""Scenes rahman1996-table5_1 ... table5_7: Rahman (1996), the CSSP balancing example
+of section 5.2 (Tables 5.1-5.7).
+
+One run of each engine gives every table (the program computes all of them in one
+pass), so each engine's run is cached for the process and shared by the seven scenes.
+"""
+from __future__ import annotations
+
+import importlib.util
+import tempfile
+from functools import lru_cache
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from .. import legacy
+from ..legacy.rahman1996 import CSSP_COLUMNS, INERTIA_ROWS
+from ..port import CORRECTED, PRINTED
+from .engines import PrintedProgramError, run_program
+from .scene import Scene
+
+PROGRAM = "rahman1996_cssp_main"
+#: the port of the CSSP program (port/cssp.py) is still being written (issue 4): until it is
+#: installed, the port engines give no Rahman cell (`not-produced`), visibly.
+PORT_READY = importlib.util.find_spec("linkrepro.port.cssp") is not None
+CRANK_DEG = np.arange(0.0, 361.0, 10.0)
+SERIES_COLUMNS = ["crank_deg", "before", "after"]
+INERTIA_COLUMNS = ["link", "quantity", "before", "after"]
+#: relative difference within the REAL*4 sensitivity measured in register D056
+REL_FLOOR = 1e-6
+
+TITLES = {
+    "5_1": "mass properties (principal moments of inertia) of crank and connecting rod",
+    "5_2": "objective function G at each crank position",
+    "5_3": "shaking force (lbf)",
+    "5_4": "shaking moment (lbf in)",
+    "5_5": "bearing force (lbf)",
+    "5_6": "bearing torque (lbf in)",
+    "5_7": "input torque (lbf in)",
+}
+INPUTS = ("Section 5.2 and the listing's PARAMETERs: a1=2, a2=8, a4=1, s1=0.4 in, alpha4=250 deg, "
+          "3000 rpm, g=386.4 in/s^2, weights 1.9, 7.6, 6.0 lbf, W1..W5=1, bearing length 0.4 in; "
+          "37 crank positions 0..360 deg. 'before' = the four equal point masses per link, 'after' "
+          "= the QP solution (our QPROG stand-in, D050). port_corrected: every registered bug of "
+          "the listing removed.")
+
+
+def series_frame(values: np.ndarray) -> pd.DataFrame:
+    """A 37 x 2 array (before, after) as a crank_deg, before, after table."""
+    return pd.DataFrame({"crank_deg": CRANK_DEG, "before": values[:, 0], "after": values[:, 1]})
+
+
+def inertia_frame(values: np.ndarray) -> pd.DataFrame:
+    """A 6 x 2 array (before, after) as Table 5.1 (link, quantity, before, after)."""
+    links, quantities = zip(*INERTIA_ROWS)
+    return pd.DataFrame({"link": links, "quantity": quantities,
+                         "before": values[:, 0], "after": values[:, 1]})
+
+
+@lru_cache(maxsize=1)
+def legacy_tables() -> dict[str, pd.DataFrame]:
+    """Every table from one call of the FORTRAN (legacy/src)."""
+    run = legacy.cssp()
+    tables = {"5_1": inertia_frame(run["inertia"])}
+    for k, table in enumerate(dict.fromkeys(t for t, _ in CSSP_COLUMNS)):
+        tables[table] = series_frame(run["table"][:, 2 * k:2 * k + 2])
+    return tables
+
+
+@lru_cache(maxsize=1)
+def printed_run() -> dict:
+    """The printed program as a subprocess, in a fresh directory (it OPENs dint.dat NEW).
+
+    Its one live per-position WRITE is ``TH1, dint`` (the input torque's percentage
+    decrement, Figure 5.6); at the end it WRITEs ``I1X, NUI1X`` (Table 5.1, crank I_xx).
+    """
+    with tempfile.TemporaryDirectory() as tmp:
+        run_program(PROGRAM, cwd=Path(tmp))
+        lines = [line.split() for line in (Path(tmp) / "dint.dat").read_text().splitlines() if line.strip()]
+    try:
+        numbers = np.array([[float(v) for v in fields] for fields in lines])
+    except ValueError as exc:
+        raise PrintedProgramError(f"{PROGRAM}: unreadable dint.dat: {exc}") from exc
+    if numbers.shape != (len(CRANK_DEG) + 1, 2):
+        raise PrintedProgramError(f"{PROGRAM}: dint.dat has shape {numbers.shape}, expected 38 x 2")
+    return {"dint_pct": numbers[:-1], "crank_ixx": numbers[-1]}
+
+
+def printed_tables() -> dict[str, pd.DataFrame]:
+    """What the printed program gives of the tables: only Table 5.1's crank I_xx."""
+    nan = np.full((len(CRANK_DEG), 2), np.nan)
+    tables = {t: series_frame(nan) for t in TITLES if t != "5_1"}
+    inertia = np.full((len(INERTIA_ROWS), 2), np.nan)
+    inertia[0] = printed_run()["crank_ixx"]
+    tables["5_1"] = inertia_frame(inertia)
+    return tables
+
+
+@lru_cache(maxsize=None)
+def port_tables(quirks) -> dict[str, pd.DataFrame]:
+    """Every table from one balance() of the port with these quirks (NaN without the port)."""
+    if not PORT_READY:
+        nan = np.full((len(CRANK_DEG), 2), np.nan)
+        tables = {t: series_frame(nan) for t in TITLES if t != "5_1"}
+        tables["5_1"] = inertia_frame(np.full((len(INERTIA_ROWS), 2), np.nan))
+        return tables
+    from ..port.cssp import CsspInputs, balance
+    return balance(CsspInputs(), quirks=quirks)["tables"]
+
+
+def port_quirks() -> tuple:
+    """The port's (PRINTED, CORRECTED) switch sets for this program."""
+    if not PORT_READY:
+        return (PRINTED.without(*PRINTED.names()), CORRECTED)     # nothing to switch
+    from ..port.cssp_quirks import CSSP_CORRECTED, CSSP_PRINTED
+    return (CSSP_PRINTED, CSSP_CORRECTED)
+
+
+def _scene(table: str) -> Scene:
+    inertia = table == "5_1"
+    return Scene(
+        name=f"rahman1996-table{table}",
+        title=f"Rahman (1996) Table {table.replace('_', '.')}: {TITLES[table]}, before and after optimum balancing",
+        table=f"rahman1996_table{table}",
+        columns=INERTIA_COLUMNS if inertia else SERIES_COLUMNS,
+        key=("link", "quantity") if inertia else "crank_deg",
+        inputs=INPUTS,
+        printed=lambda: printed_tables()[table],
+        legacy=lambda: legacy_tables()[table],
+        port=lambda quirks: port_tables(quirks)[table],
+        notes=["The seven Rahman scenes share one run of each engine (the program computes every table "
+               "at once): the first scene's timings include the run, the others read its cache.",
+               *([] if PORT_READY else ["port engines: the CSSP port is not written yet (issue 4): "
+                                        "they give no cell of this table."]),
+               "printed engine: the printed program WRITEs only Table 5.1's crank I_xx (and the input "
+               "torque's percentage, replotted in rahman1996-figures)."],
+        quirks=port_quirks(),
+        rel_floor=REL_FLOOR,
+        floor_id="D056",
+    )
+
+
+RAHMAN1996_SCENES = [_scene(t) for t in TITLES]
