@@ -139,6 +139,7 @@ C
       REAL*8 S(5,5),B(5,5),C(5,10)
       REAL*8 TEMP
       COMMON /INVERR/ IERINV                                            ! D052
+      IERINV=0                                                          ! D052
 C SPECIFICATION OF C MATRIX(AUGMENTED ATA MATRIX)
       DO 10 L=1,5
       DO 20 J=1,5
