@@ -95,7 +95,7 @@ C     ---- CHOLESKY OF H + DIAG*I, RAISING DIAG WHERE A PIVOT FAILS ----
          DO 110 K = 1, J-1
             PIVOT = PIVOT - L(J,K)**2
   110    CONTINUE
-         IF (PIVOT.LE.TINY) THEN
+         IF (PIVOT.LT.TINY) THEN
             DIAG = DIAG + (TINY - PIVOT)
             GO TO 100
          END IF
