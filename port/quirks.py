@@ -2,7 +2,9 @@
 
 ``PRINTED`` turns every quirk on: the port then reproduces the legacy FORTRAN.
 ``CORRECTED`` turns them all off: the port computes what the thesis meant.
-Each field names its entry in ``harness/deviations.toml``.
+Each field names its entry in ``harness/deviations.toml``.  ``QuirkSwitches``
+is what every program's switch set shares (Ali 1977 here, Rahman 1996 in
+``cssp_quirks``).
 """
 from __future__ import annotations
 
@@ -10,7 +12,37 @@ from dataclasses import dataclass, fields, replace
 
 
 @dataclass(frozen=True)
-class Quirks:
+class QuirkSwitches:
+    """A frozen set of named boolean switches, one per bug of a listing."""
+
+    @classmethod
+    def names(cls) -> list[str]:
+        return [f.name for f in fields(cls)]
+
+    @classmethod
+    def all(cls, value: bool):
+        """Every switch on (the listing as printed) or off (corrected)."""
+        return cls(**{name: value for name in cls.names()})
+
+    def only(self, name: str, value: bool):
+        """A copy with one quirk switched."""
+        if name not in self.names():
+            raise ValueError(f"unknown quirk {name!r}; known: {', '.join(self.names())}")
+        return replace(self, **{name: value})
+
+    def __and__(self, other):
+        """The quirks on in both: a listing's own bugs, restricted to those switched on."""
+        return type(self)(**{n: getattr(self, n) and getattr(other, n) for n in self.names()})
+
+    def without(self, *names: str):
+        """A copy with the named quirks off (a listing that does not have those bugs)."""
+        for name in names:
+            self = self.only(name, False)
+        return self
+
+
+@dataclass(frozen=True)
+class Quirks(QuirkSwitches):
     pi_22_7: bool = True                 # D011  PI=3.142857143 (22/7) in every listing
     source_alpha_101: bool = True        # D012  source listing: ALP=1.762782545 (101 deg), not 60 deg
     omega3_sign: bool = True             # D013  OM3 uses SIN(T4-T3) for SIN(T4-T2)
@@ -27,27 +59,7 @@ class Quirks:
     node_mass_from_pin: bool = True      # D033  Case III: node k carries the mass of the extender up to it
     uncoupled_nodes: bool = True         # D034  Case III: block-diagonal beta*, F*: a node feels only its own load
 
-    @classmethod
-    def names(cls) -> list[str]:
-        return [f.name for f in fields(cls)]
-
-    def only(self, name: str, value: bool) -> "Quirks":
-        """A copy with one quirk switched."""
-        if name not in self.names():
-            raise ValueError(f"unknown quirk {name!r}; known: {', '.join(self.names())}")
-        return replace(self, **{name: value})
-
-
-    def __and__(self, other: "Quirks") -> "Quirks":
-        """The quirks on in both: a listing's own bugs, restricted to those switched on."""
-        return Quirks(**{n: getattr(self, n) and getattr(other, n) for n in self.names()})
-
-    def without(self, *names: str) -> "Quirks":
-        """A copy with the named quirks off (a listing that does not have those bugs)."""
-        for name in names:
-            self = self.only(name, False)
-        return self
 
 
 PRINTED = Quirks()
-CORRECTED = Quirks(**{name: False for name in Quirks.names()})
+CORRECTED = Quirks.all(False)

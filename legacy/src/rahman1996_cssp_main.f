@@ -151,6 +151,7 @@ C     OPEN (6,FILE='dint.dat',STATUS='new')                             ! D053
       ETA3=0.0                                                          ! D054
       fy(9)=0.0                                                         ! D054
       fz(9)=0.0                                                         ! D054
+      f3x(8)=0.0                                                        ! D054
       PI=4.0*ATAN(1.0)
       DEGRAD=PI/180.0
 C Mass properties of the original links

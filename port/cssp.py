@@ -1,0 +1,146 @@
+"""Rahman's (1996) optimum balancing of the CSSP mechanism, ported: ``balance``.
+
+Over the 37 crank positions 0, 10, ..., 360 deg: the mechanics (the listing's own, or the
+closed-loop model: ``CsspQuirks.open_loop_model``), the objective of eq. (4.3) summed over
+the cycle, the quadratic program of section 4.4 for the nine point masses, and the
+quantities of Tables 5.1-5.7 before (equal point masses) and after (the QP's masses).
+
+The QP is solved by the ``quadprog`` package (Goldfarb-Idnani, the method of IMSL's QPROG).
+Its Hessian is singular here (the split of the crank's three pair masses enters nothing,
+register D057), so, as IMSL documents for QPROG, H + DIAG*I is used with DIAG the smallest
+shift our FORTRAN stand-in finds by raising Cholesky pivots (``hessian_shift``).
+
+Units: inch, lbf, second, lb*s^2/in; crank angles in degrees at the interface.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+
+import numpy as np
+import quadprog
+
+from .cssp_data import QP_EQUALITIES, QP_ROWS, Constants, CsspInputs
+from .cssp_listing import Carry, initial_estimate, joint_rates, newton_positions, unit_loads
+from .cssp_objective import UnitLoads, objective, position_forms, table_quantities
+from .cssp_quirks import CSSP_CORRECTED, CSSP_PRINTED, CsspQuirks
+
+__all__ = ["CsspInputs", "balance", "solve_qp", "hessian_shift", "CRANK_DEG", "CSSP_PRINTED", "CSSP_CORRECTED"]
+
+#: the listing's positions: TH1 = J*10 - 10, J = 1..37
+CRANK_DEG = np.arange(37) * 10.0
+#: TABLE columns, as legacy.rahman1996.CSSP_COLUMNS: (table, before/after)
+TABLES = ("5_2", "5_3", "5_4", "5_5", "5_6", "5_7")
+
+
+def hessian_shift(h: np.ndarray) -> float:
+    """DIAG: the multiple of I that makes H positive definite, by our QPROG's rule (D050).
+
+    Cholesky pivot by pivot; a pivot below sqrt(eps)*max|H_ii| raises DIAG by the
+    shortfall and restarts.  0 for a positive definite H.
+    """
+    n = len(h)
+    scale = max(np.max(np.abs(np.diag(h))), 0.0) or 1.0
+    tiny, diag = np.sqrt(np.finfo(float).eps) * scale, 0.0
+    while True:
+        low = np.zeros_like(h)
+        for j in range(n):
+            pivot = h[j, j] + diag - low[j, :j] @ low[j, :j]
+            if pivot < tiny:
+                diag += tiny - pivot
+                break
+            low[j, j] = np.sqrt(pivot)
+            low[j + 1:, j] = (h[j + 1:, j] - low[j + 1:, :j] @ low[j, :j]) / low[j, j]
+        else:
+            return diag
+
+
+def solve_qp(h: np.ndarray, rows: np.ndarray = QP_ROWS, bounds=None, equalities: int = QP_EQUALITIES):
+    """min x'Hx/2 s.t. the first ``equalities`` rows x = bounds, the rest x >= bounds.
+
+    Returns (x, diag).  Raises ValueError when the constraints are inconsistent.
+    """
+    diag = hessian_shift(h)
+    try:
+        x = quadprog.solve_qp(h + diag * np.eye(len(h)), np.zeros(len(h)), rows.T,
+                              np.asarray(bounds, float), equalities)[0]
+    except ValueError as exc:
+        raise ValueError(f"the balancing QP has no solution: {exc}") from exc
+    return x, diag
+
+
+@dataclass
+class Pass:
+    """One sweep of the 37 positions: the per-unit loads and each position's form F."""
+    loads: UnitLoads
+    forms: np.ndarray        # (37, 9, 9)
+
+
+@lru_cache(maxsize=8)
+def _listing_motions(inputs: CsspInputs, real4: bool):
+    """The printed Newton's two passes (pass 2 starts with pass 1's last eta2, eta3)."""
+    c = Constants.of(inputs, real4)
+    theta1 = CRANK_DEG * (c.pi / 180.0)
+    start = initial_estimate(c, real4)
+    first = newton_positions(theta1, start, c)
+    start[[1, 3]] = first.q[-1, [1, 3]]
+    second = newton_positions(theta1, start, c)
+    return joint_rates(theta1, first.q, c), joint_rates(theta1, second.q, c)
+
+
+def _passes(inputs: CsspInputs, quirks: CsspQuirks, c: Constants) -> list[Pass]:
+    positions = 37 if quirks.objective_37_positions else 36
+    if quirks.open_loop_model:
+        carry, passes = Carry(), []
+        for motion in _listing_motions(inputs, quirks.cssp_real4):
+            loads, carry = unit_loads(motion, c, quirks, carry)
+            passes.append(Pass(loads, position_forms(loads, c, quirks, positions)))
+        return passes
+    from .cssp_mechanics import closed_loop_loads
+    loads = closed_loop_loads(c, np.radians(CRANK_DEG))
+    return [Pass(loads, position_forms(loads, c, quirks, positions))]
+
+
+def balance(inputs: CsspInputs = CsspInputs(), quirks: CsspQuirks = CSSP_PRINTED) -> dict:
+    """Run the balancing example; every quantity of Tables 5.1-5.7.
+
+    Returns ``table`` (37 x 12: objective, shaking force, shaking moment, bearing force,
+    bearing torque, input torque, each before and after, rows 0..360 deg), ``inertia``
+    (6 x 2: I_xx, I_yy, I_zz of crank and rod, before and after), ``solution`` (the
+    masses of the 'after' columns), ``solution_table51`` (those of Table 5.1), and
+    ``diag`` and ``hessian`` of the first QP.
+    With ``open_loop_model`` the listing's two passes run: OF accumulates over both, the
+    tables use the first QP's answer, Table 5.1 the second's (as printed).
+    """
+    c = Constants.of(inputs, quirks.cssp_real4)
+    single = (lambda v: np.asarray(v, np.float32).astype(float)) if quirks.cssp_real4 else np.asarray
+    counted = slice(0, 37 if quirks.objective_37_positions else 36)
+    passes = _passes(inputs, quirks, c)
+    accumulated, solutions, first_qp = np.zeros((9, 9)), [], None
+    for sweep in passes:
+        accumulated = accumulated + sweep.forms[counted].sum(axis=0)
+        hessian = single(2.0 * accumulated)
+        x, diag = solve_qp(hessian, bounds=c.qp_bounds)
+        solutions.append(single(x))
+        first_qp = first_qp or (hessian, diag)
+    last, after = passes[-1], solutions[0]
+    before = c.point_masses
+    columns = [objective(last.forms, before, quirks),
+               objective(last.forms, after, quirks, single=quirks.cssp_real4)]
+    quantities = [table_quantities(last.loads, x, quirks) for x in (before, after)]
+    for table in TABLES[1:]:
+        columns += [quantities[0][table], quantities[1][table]]
+    return {"table": np.stack(columns, axis=1), "inertia": _inertia_table(c, solutions[-1]),
+            "solution": after, "solution_table51": solutions[-1], "hessian": first_qp[0],
+            "diag": first_qp[1]}
+
+
+def _inertia_table(c: Constants, x: np.ndarray) -> np.ndarray:
+    """Table 5.1: principal moments of crank and rod (eq. 2.9), before and after."""
+    rows = []
+    for link, (arms, inertia) in enumerate(((c.crank_arms, c.inertia_crank), (c.rod_arms, c.inertia_rod))):
+        xa, ya, za = arms
+        m1, m2, m3 = x[4 * link:4 * link + 3]
+        after = (ya ** 2 * m2 + za ** 2 * m3, xa ** 2 * m1 + za ** 2 * m3, xa ** 2 * m1 + ya ** 2 * m2)
+        rows += list(zip(inertia, after))
+    return np.array(rows)

@@ -1,0 +1,114 @@
+"""Inputs and constants of Rahman's (1996) CSSP example (section 5.2, Appendix B).
+
+Units as printed: inch, lbf, second; masses lb*s^2/in, inertias lb*s^2*in; angles in
+degrees at the interface, radians inside.  ``Constants.of(inputs, real4)`` gives every
+number the listing computes with: with ``real4`` they are what its REAL*4 arguments,
+literals and single-precision expressions hold (S1 = 0.4 is 0.4000000059604645), without
+it they are the decimal values.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+#: g (in/s^2) and the weights (lbf) of crank, connecting rod and slider
+GRAVITY = 386.4
+WEIGHTS = (1.9, 7.6, 6.0)
+#: CG of crank and rod on their x axes, from the distal frame (in): G1, G2
+CG_OFFSETS = (-1.0, -4.0)
+#: radii of gyration about the CG (in): crank (x, y, z), rod (x, y, z)
+RADII_CRANK = (0.2041241, 0.595119, 0.595119)
+RADII_ROD = (0.2041241, 2.3139072, 2.3139072)
+#: the rod's radii about its distal frame, used by the listing's original-link forces
+RADII_ROD_DISTAL = (0.2041241, 4.6210569, 4.6210569)
+#: bearing length B1 (in), eq. (4.2)
+BEARING_LENGTH = 0.4
+#: QP constraint right-hand sides (DATA b): x1+x2+x3, x5+x6+x7, x9; lower bounds of x1..x8
+QP_BOUNDS = (0.003688, 0.01475, 0.01553, 0.001168, 0.001168, 0.001168, 0.001168,
+             0.00467, 0.00467, 0.00467, 0.00467)
+#: rows of the constraint matrix (DATA aa, register D081): 3 equalities, then x1..x8 >= b
+QP_ROWS = np.vstack([[1, 1, 1, 0, 0, 0, 0, 0, 0], [0, 0, 0, 0, 1, 1, 1, 0, 0],
+                     [0, 0, 0, 0, 0, 0, 0, 0, 1], np.eye(9)[:8]]).astype(float)
+QP_EQUALITIES = 3
+
+
+@dataclass(frozen=True)
+class CsspInputs:
+    """The example of section 5.2: lengths (in), ground twist (deg), crank speed (rpm)."""
+    a1: float = 2.0
+    a2: float = 8.0
+    a4: float = 1.0
+    alpha4_deg: float = 250.0
+    s1: float = 0.4
+    rpm: float = 3000.0
+
+    def __post_init__(self):
+        for name in ("a1", "a2", "rpm"):
+            value = getattr(self, name)
+            if not (math.isfinite(value) and value > 0):
+                raise ValueError(f"{name} must be positive and finite, got {value!r}")
+        for name in ("a4", "alpha4_deg", "s1"):
+            if not math.isfinite(getattr(self, name)):
+                raise ValueError(f"{name} must be finite, got {getattr(self, name)!r}")
+
+
+def _single(x, real4: bool) -> float:
+    """A REAL*4 literal or argument (as the listing holds it) or the exact value."""
+    return float(np.float32(x)) if real4 else float(x)
+
+
+@dataclass(frozen=True)
+class Constants:
+    """Every number the CSSP computation uses, as one precision regime holds it."""
+    a1: float
+    a2: float
+    a4: float
+    s1: float
+    alpha4: float              # rad
+    omega: float               # crank speed, rad/s
+    pi: float
+    masses: tuple              # M1, M2, M3 (lb s^2/in)
+    inertia_crank: tuple       # I1X, I1Y, I1Z about the CG (lb s^2 in)
+    inertia_rod: tuple         # I2X, I2Y, I2Z
+    rod_radii_distal: tuple    # K2X, K2Y, K2Z about frame {3}
+    cg: tuple                  # G1, G2
+    crank_arms: tuple          # X1, Y1, Z1: point-mass distances (eq. 2.12)
+    rod_arms: tuple            # X2, Y2, Z2
+    point_masses: np.ndarray   # the nine design variables before balancing (eq. 4.4)
+    bearing_length_sq: float   # BL**2
+    qp_bounds: np.ndarray
+    newton_tol: float          # the listing's 0.0000001
+
+    @classmethod
+    def of(cls, inputs: CsspInputs, real4: bool) -> "Constants":
+        s = lambda x: _single(x, real4)                                   # noqa: E731
+        pi = float(np.float32(4.0) * np.arctan(np.float32(1.0))) if real4 else math.pi
+        degrad = pi / 180.0
+        g = s(GRAVITY)
+        # M1=1.9/G: a single-precision division in the listing
+        masses = tuple(float(np.float32(s(w)) / np.float32(g)) if real4 else w / g for w in WEIGHTS)
+        crank_k, rod_k = [s(k) for k in RADII_CRANK], [s(k) for k in RADII_ROD]
+        inertia_crank = tuple(masses[0] * k ** 2 for k in crank_k)
+        inertia_rod = tuple(masses[1] * k ** 2 for k in rod_k)
+        quarter = (masses[0] / 4.0, masses[1] / 4.0)
+        crank_arms, rod_arms = (_arms(i, q) for i, q in ((inertia_crank, quarter[0]), (inertia_rod, quarter[1])))
+        point_masses = np.array([*[quarter[0]] * 3, masses[0] - 3 * quarter[0],
+                                 *[quarter[1]] * 3, masses[1] - 3 * quarter[1], masses[2]])
+        bl = s(BEARING_LENGTH)
+        return cls(a1=s(inputs.a1), a2=s(inputs.a2), a4=s(inputs.a4), s1=s(inputs.s1),
+                   alpha4=inputs.alpha4_deg * degrad, omega=float(np.float32(6.0) * np.float32(s(inputs.rpm)))
+                   * degrad if real4 else 6.0 * inputs.rpm * degrad, pi=pi, masses=masses,
+                   inertia_crank=inertia_crank, inertia_rod=inertia_rod,
+                   rod_radii_distal=tuple(s(k) for k in RADII_ROD_DISTAL), cg=CG_OFFSETS,
+                   crank_arms=crank_arms, rod_arms=rod_arms, point_masses=point_masses,
+                   bearing_length_sq=float(np.float32(bl) * np.float32(bl)) if real4 else bl * bl,
+                   qp_bounds=np.array([s(b) for b in QP_BOUNDS]), newton_tol=s(1e-7))
+
+
+def _arms(inertia, m) -> tuple:
+    """X, Y, Z of eq. (2.12): half point masses m/2 at +-X on x, +-Y on y, +-Z on z."""
+    ix, iy, iz = inertia
+    return (((iy + iz - ix) / (2.0 * m)) ** 0.5, ((ix + iz - iy) / (2.0 * m)) ** 0.5,
+            ((ix + iy - iz) / (2.0 * m)) ** 0.5)
