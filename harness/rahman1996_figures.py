@@ -17,8 +17,8 @@ import pandas as pd  # noqa: E402
 
 from .published_tables import PUBLISHED_DIR, PublishedTable  # noqa: E402
 from .report import STYLE, finish_plot  # noqa: E402
-from .scenes_rahman1996 import (CRANK_DEG, PORT_READY, legacy_tables, port_quirks, port_tables,  # noqa: E402
-                                printed_run)
+from ..port.cssp_quirks import CSSP_CORRECTED, CSSP_PRINTED  # noqa: E402
+from .scenes_rahman1996 import CRANK_DEG, legacy_tables, port_tables, printed_run  # noqa: E402
 
 NAME = "rahman1996-figures"
 TABLES = ["5_2", "5_3", "5_4", "5_5", "5_6", "5_7"]
@@ -32,11 +32,9 @@ def decrement_pct(table: pd.DataFrame) -> np.ndarray:
 
 def percentages() -> pd.DataFrame:
     """Long table: table, engine, crank_deg, pct, for every engine that gives it."""
-    printed_quirks, corrected_quirks = port_quirks()
     sources = {"published": {t: PublishedTable.load(f"rahman1996_table{t}").values for t in TABLES},
-               "legacy": legacy_tables()}
-    if PORT_READY:
-        sources.update(port_printed=port_tables(printed_quirks), port_corrected=port_tables(corrected_quirks))
+               "legacy": legacy_tables(), "port_printed": port_tables(CSSP_PRINTED),
+               "port_corrected": port_tables(CSSP_CORRECTED)}
     frames = [pd.DataFrame({"table": t, "engine": engine, "crank_deg": CRANK_DEG,
                             "pct": decrement_pct(tables[t])})
               for engine, tables in sources.items() for t in TABLES]

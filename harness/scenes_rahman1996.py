@@ -6,7 +6,6 @@ pass), so each engine's run is cached for the process and shared by the seven sc
 """
 from __future__ import annotations
 
-import importlib.util
 import tempfile
 from functools import lru_cache
 from pathlib import Path
@@ -16,14 +15,12 @@ import pandas as pd
 
 from .. import legacy
 from ..legacy.rahman1996 import CSSP_COLUMNS, INERTIA_ROWS
-from ..port import CORRECTED, PRINTED
+from ..port.cssp import CsspInputs, balance
+from ..port.cssp_quirks import CSSP_CORRECTED, CSSP_PRINTED
 from .engines import PrintedProgramError, run_program
 from .scene import Scene
 
 PROGRAM = "rahman1996_cssp_main"
-#: the port of the CSSP program (port/cssp.py) is still being written (issue 4): until it is
-#: installed, the port engines give no Rahman cell (`not-produced`), visibly.
-PORT_READY = importlib.util.find_spec("linkrepro.port.cssp") is not None
 CRANK_DEG = np.arange(0.0, 361.0, 10.0)
 SERIES_COLUMNS = ["crank_deg", "before", "after"]
 INERTIA_COLUMNS = ["link", "quantity", "before", "after"]
@@ -58,14 +55,18 @@ def inertia_frame(values: np.ndarray) -> pd.DataFrame:
                          "before": values[:, 0], "after": values[:, 1]})
 
 
-@lru_cache(maxsize=1)
-def legacy_tables() -> dict[str, pd.DataFrame]:
-    """Every table from one call of the FORTRAN (legacy/src)."""
-    run = legacy.cssp()
+def as_tables(run: dict) -> dict[str, pd.DataFrame]:
+    """A CSSP run (legacy.cssp() or port.cssp.balance(): ``table``, ``inertia``) as the seven tables."""
     tables = {"5_1": inertia_frame(run["inertia"])}
     for k, table in enumerate(dict.fromkeys(t for t, _ in CSSP_COLUMNS)):
         tables[table] = series_frame(run["table"][:, 2 * k:2 * k + 2])
     return tables
+
+
+@lru_cache(maxsize=1)
+def legacy_tables() -> dict[str, pd.DataFrame]:
+    """Every table from one call of the FORTRAN (legacy/src)."""
+    return as_tables(legacy.cssp())
 
 
 @lru_cache(maxsize=1)
@@ -99,22 +100,8 @@ def printed_tables() -> dict[str, pd.DataFrame]:
 
 @lru_cache(maxsize=None)
 def port_tables(quirks) -> dict[str, pd.DataFrame]:
-    """Every table from one balance() of the port with these quirks (NaN without the port)."""
-    if not PORT_READY:
-        nan = np.full((len(CRANK_DEG), 2), np.nan)
-        tables = {t: series_frame(nan) for t in TITLES if t != "5_1"}
-        tables["5_1"] = inertia_frame(np.full((len(INERTIA_ROWS), 2), np.nan))
-        return tables
-    from ..port.cssp import CsspInputs, balance
-    return balance(CsspInputs(), quirks=quirks)["tables"]
-
-
-def port_quirks() -> tuple:
-    """The port's (PRINTED, CORRECTED) switch sets for this program."""
-    if not PORT_READY:
-        return (PRINTED.without(*PRINTED.names()), CORRECTED)     # nothing to switch
-    from ..port.cssp_quirks import CSSP_CORRECTED, CSSP_PRINTED
-    return (CSSP_PRINTED, CSSP_CORRECTED)
+    """Every table from one balance() of the port with these quirks."""
+    return as_tables(balance(CsspInputs(), quirks=quirks))
 
 
 def _scene(table: str) -> Scene:
@@ -131,11 +118,11 @@ def _scene(table: str) -> Scene:
         port=lambda quirks: port_tables(quirks)[table],
         notes=["The seven Rahman scenes share one run of each engine (the program computes every table "
                "at once): the first scene's timings include the run, the others read its cache.",
-               *([] if PORT_READY else ["port engines: the CSSP port is not written yet (issue 4): "
-                                        "they give no cell of this table."]),
+               "port_corrected is the closed-loop Newton-Euler model (register D079), not the listing's "
+               "open loop: its cells differ from the published ones by design.",
                "printed engine: the printed program WRITEs only Table 5.1's crank I_xx (and the input "
                "torque's percentage, replotted in rahman1996-figures)."],
-        quirks=port_quirks(),
+        quirks=(CSSP_PRINTED, CSSP_CORRECTED),
         rel_floor=REL_FLOOR,
         floor_id="D056",
     )

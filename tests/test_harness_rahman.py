@@ -5,7 +5,7 @@ import pandas as pd
 import pytest
 
 from linkrepro.harness import rahman1996_figures
-from linkrepro.harness.diff import diff_scene
+from linkrepro.harness.diff import diff_scene, quirk_effects
 from linkrepro.harness.published_tables import PublishedTable
 from linkrepro.harness.scenes import SCENES, get
 
@@ -39,6 +39,16 @@ def test_no_cell_is_unexplained(name, register):
     registered = diff[diff["status"] == "registered"]
     for ids in registered["register_ids"]:
         assert set(ids.split()) <= set(register)
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_each_quirk_moves_exactly_the_columns_its_entry_names(name, register):
+    """Switch each bug of the listing off alone: the columns it moves are those registered."""
+    scene = get(name)
+    effects = quirk_effects(scene, PublishedTable.load(scene.table), scene.port(scene.quirks[0]))
+    for quirk, moved in effects.items():
+        entry = next(e for e in register.values() if e.quirk == quirk)
+        assert sorted(c for c in scene.values if moved[c].any()) == sorted(entry.moves[name]), (entry.id, name)
 
 
 def test_half_unit_reads_exponents():
