@@ -77,22 +77,22 @@ class Pass:
 
 
 @lru_cache(maxsize=8)
-def _listing_motions(inputs: CsspInputs, real4: bool):
+def _listing_motions(inputs: CsspInputs, real4: bool, printed_inverse: bool):
     """The printed Newton's two passes (pass 2 starts with pass 1's last eta2, eta3)."""
     c = Constants.of(inputs, real4)
     theta1 = CRANK_DEG * (c.pi / 180.0)
     start = initial_estimate(c, real4)
-    first = newton_positions(theta1, start, c)
+    first = newton_positions(theta1, start, c, printed_inverse)
     start[[1, 3]] = first.q[-1, [1, 3]]
-    second = newton_positions(theta1, start, c)
-    return joint_rates(theta1, first.q, c), joint_rates(theta1, second.q, c)
+    second = newton_positions(theta1, start, c, printed_inverse)
+    return tuple(joint_rates(theta1, run.q, c, printed_inverse) for run in (first, second))
 
 
 def _passes(inputs: CsspInputs, quirks: CsspQuirks, c: Constants) -> list[Pass]:
     positions = 37 if quirks.objective_37_positions else 36
     if quirks.open_loop_model:
         carry, passes = Carry(), []
-        for motion in _listing_motions(inputs, quirks.cssp_real4):
+        for motion in _listing_motions(inputs, quirks.cssp_real4, quirks.inverse_without_pivoting):
             loads, carry = unit_loads(motion, c, quirks, carry)
             passes.append(Pass(loads, position_forms(loads, c, quirks, positions)))
         return passes

@@ -64,7 +64,37 @@ def _about_axis(theta) -> np.ndarray:
     return np.array([[0.0, 0.0, ct], [0.0, 0.0, st], [-ct, -st, 0.0]])
 
 
-def newton_step(theta1: float, q: np.ndarray, c: Constants) -> np.ndarray:
+def printed_inverse(s: np.ndarray) -> np.ndarray:
+    """The listing's INVERSE for a 5x5 matrix: Gauss-Jordan with no pivoting (D084).
+
+    The order of operations is the listing's: forward elimination building L^-1 in the
+    right half, then back substitution, then division by the pivots.  (It swaps rows only
+    on an exactly zero pivot, and then returns the inverse of the row-permuted matrix; here
+    an exactly zero pivot raises ZeroDivisionError, which the callers report.)
+    """
+    c = np.hstack([np.array(s, dtype=float), np.eye(5)])
+    for k in range(4):                                    # pivots 1..4 and L^-1 in columns 6..9
+        if c[k, k] == 0.0:
+            raise ZeroDivisionError("INVERSE: zero pivot")
+        rows, cols = slice(k + 1, 5), slice(k + 1, 5 + k)
+        c[rows, cols] = c[rows, cols] - (c[rows, k, None] * c[k, cols]) / c[k, k]
+        c[rows, 5 + k] = -c[rows, k] / c[k, k]
+    if c[4, 4] == 0.0:
+        raise ZeroDivisionError("INVERSE: zero pivot")
+    for k in range(4, 0, -1):                             # back substitution, pivots 5..2
+        cols = slice(k + 1 if k < 4 else 5, 10)
+        c[:k, cols] = c[:k, cols] - (c[k, cols] * c[:k, k, None]) / c[k, k] if k == 4 else \
+            c[:k, cols] - (c[:k, k, None] * c[k, cols]) / c[k, k]
+    return c[:, 5:] / np.diag(c)[:, None]
+
+
+def pseudo_inverse(a: np.ndarray, printed: bool) -> np.ndarray:
+    """(A'A)^-1 A' of a 6 x 5 matrix: with the listing's INVERSE, or by LU with pivoting."""
+    ata = a.T @ a
+    return printed_inverse(ata) @ a.T if printed else np.linalg.solve(ata, a.T)
+
+
+def newton_step(theta1: float, q: np.ndarray, c: Constants, printed: bool = True) -> np.ndarray:
     """One printed step: DELTA = (A'A)^-1 A' V at q = (theta2, eta2, theta3, eta3, s4)."""
     m1, l2 = _m1(theta1, c), _l2(q[0], q[1], c)
     l3, m4 = DualMatrix(_l3_real(q[2], q[3]), np.zeros((3, 3))), _m4(q[4], c)
@@ -82,7 +112,7 @@ def newton_step(theta1: float, q: np.ndarray, c: Constants) -> np.ndarray:
     br, bd = b.real, b.dual
     v = np.array([br[1, 0] + br[0, 0] + br[1, 1] - 2.0, br[2, 0] + br[0, 0] + br[2, 2] - 2.0,
                   br[2, 1] + br[1, 1] + br[2, 2] - 2.0, bd[1, 0], bd[2, 0], bd[2, 1]])
-    return np.linalg.solve(a.T @ a, a.T @ v)
+    return pseudo_inverse(a, printed) @ v
 
 
 @dataclass
@@ -91,37 +121,43 @@ class NewtonRun:
     iterations: np.ndarray   # (n,) Newton steps taken
 
 
-def newton_positions(theta1: np.ndarray, q0: np.ndarray, c: Constants) -> NewtonRun:
+def newton_positions(theta1: np.ndarray, q0: np.ndarray, c: Constants, printed: bool = True) -> NewtonRun:
     """The printed iteration over the positions in order, each from the last answer.
 
     It stops when every component of the step is <= 1e-7 and keeps the point before
     that step; after 150 evaluations it fails (the listing's STOP, here ConvergenceError).
+    ``printed``: invert A'A with the listing's INVERSE (no pivoting), else LU.
     """
+    if not np.all(np.isfinite(q0)):
+        raise ConvergenceError("CSSP: the listing's first estimate sqrt(a2^2-(a1+a4)^2) is not real",
+                               round(float(theta1[0] * 180.0 / c.pi), 6))
     q = np.array(q0, dtype=float)
     out, iterations = np.empty((len(theta1), 5)), np.empty(len(theta1), dtype=int)
     for j, th in enumerate(theta1):
         for i in range(1, MAX_ITERATIONS + 1):
-            delta = newton_step(th, q, c)
+            try:
+                delta = newton_step(th, q, c, printed)
+            except (ZeroDivisionError, np.linalg.LinAlgError):
+                delta = np.full(5, np.nan)
             if not np.all(np.isfinite(delta)):
                 raise ConvergenceError("CSSP Newton-Raphson: singular normal equations",
-                                       float(np.degrees(th)))
+                                       round(float(th * 180.0 / c.pi), 6))
             if np.all(np.abs(delta) <= c.newton_tol):
                 break
             q = q + delta
         else:
             raise ConvergenceError(f"CSSP Newton-Raphson failed after {MAX_ITERATIONS} iterations",
-                                   float(np.degrees(th)), step=float(np.max(np.abs(delta))))
+                                   round(float(th * 180.0 / c.pi), 6), step=float(np.max(np.abs(delta))))
         out[j], iterations[j] = q, i
     return NewtonRun(out, iterations)
 
 
 def initial_estimate(c: Constants, real4: bool) -> np.ndarray:
     """The listing's start: s4 = sqrt(a2^2-(a1+a4)^2) (REAL*4), theta2 = pi - atan(s4/(a1+a4))."""
-    if real4:
-        a1, a2, a4 = (np.float32(v) for v in (c.a1, c.a2, c.a4))
-        s4 = float((a2 ** 2 - (a1 + a4) ** 2) ** np.float32(0.5))
-    else:
-        s4 = (c.a2 ** 2 - (c.a1 + c.a4) ** 2) ** 0.5
+    kind = np.float32 if real4 else np.float64
+    a1, a2, a4 = (kind(v) for v in (c.a1, c.a2, c.a4))
+    with np.errstate(invalid="ignore"):                   # not real: NaN, refused by the Newton
+        s4 = float(np.sqrt(a2 ** 2 - (a1 + a4) ** 2))
     theta2 = c.pi - np.arctan(s4 / (c.a4 + c.a1))
     return np.array([theta2, 0.0, 2.0 * c.pi - theta2, 0.0, s4])
 
@@ -139,7 +175,7 @@ class Motion:
     accels: np.ndarray       # (n, 5): the same order (DDOT)
 
 
-def joint_rates(theta1, q: np.ndarray, c: Constants) -> Motion:
+def joint_rates(theta1, q: np.ndarray, c: Constants, printed: bool = True) -> Motion:
     """Velocities and accelerations by the listing's VM, VV and AV (constant crank speed)."""
     t2, e2, t3, e3, s4 = q.T
     n, w1 = len(t2), c.omega
@@ -152,8 +188,7 @@ def joint_rates(theta1, q: np.ndarray, c: Constants) -> Motion:
     vm[:, 5, 2] = -c.a2 * c_t2
     vv = np.stack([w1 * s_e2, -c.a1 * w1 * s_t2 * c_e2, np.zeros(n), -w1 * (c.a1 * c_t2 + c.a2 * c_e2),
                    -w1 * c_e2, -w1 * c.a1 * s_t2 * s_e2], -1)
-    vmt = np.swapaxes(vm, 1, 2)
-    pseudo = np.linalg.solve(vmt @ vm, vmt)                               # (VM'VM)^-1 VM'
+    pseudo = np.stack([pseudo_inverse(vm_j, printed) for vm_j in vm])   # (VM'VM)^-1 VM'
     rates = np.einsum("nij,nj->ni", pseudo, vv)
     d_t2, d_t3, d_e2, d_e3, d_s4 = rates.T
     av = np.stack([

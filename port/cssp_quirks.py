@@ -35,6 +35,7 @@ class CsspQuirks(QuirkSwitches):
     slider_skips_frame_loops: bool = True      # D075 [listing] loops 50, 60, 70 stop at 8: the slider's stay local
     shaking_in_link_frames: bool = True        # D076 [listing] shaking force and moment sum components of different frames
     moments_about_origin: bool = True          # D077 [listing] the reaction equations take inertia moments about O
+    inverse_without_pivoting: bool = True      # D084 [listing] INVERSE: Gauss-Jordan, no pivoting
 
 
 CSSP_PRINTED = CsspQuirks()
