@@ -66,7 +66,70 @@ def run_bench(repeat: int = 20) -> str:
         drift = float(np.max(np.abs(deg - np.arange(n) * step)))
         lines.append(f"| {step:g} | {n} | {t_leg:.5f} | {t_port:.5f} | {t_port / t_leg:.2f} | {rel:.1e} | {drift:.2g} |")
     lines += case3_sweep(repeat)
+    lines += cssp_bench(repeat)
     return "\n".join(lines) + "\n"
+
+
+def cssp_bench(repeat: int) -> list[str]:
+    """Rahman (1996): each engine alone over Tables 5.1-5.7, and the corrected model's
+    cycle integral (eq. 4.1) against the number of positions L."""
+    from ..port.cssp import CsspInputs, _listing_motions, balance, solve_qp
+    from ..port.cssp_data import Constants
+    from ..port.cssp_mechanics import closed_loop_loads
+    from ..port.cssp_objective import position_forms
+    from ..port.cssp_quirks import CSSP_CORRECTED, CSSP_PRINTED
+    from .scenes_rahman1996 import as_tables, printed_run
+
+    def port(quirks):
+        _listing_motions.cache_clear()                      # time the Newton too
+        return balance(CsspInputs(), quirks=quirks)
+
+    runs = {"printed": printed_run.__wrapped__, "legacy": legacy.cssp,
+            "port_printed": lambda: port(CSSP_PRINTED), "port_corrected": lambda: port(CSSP_CORRECTED)}
+    reference = legacy.cssp()
+    lines = ["", "## rahman1996: each engine alone (one run gives Tables 5.1-5.7)", "",
+             "| engine | seconds | x legacy | published cells within half a printed unit | max |diff| / column max vs legacy |",
+             "|---|---|---|---|---|"]
+    timings = {name: _best(func, max(1, repeat // 10)) for name, func in runs.items()}
+    for name, func in runs.items():
+        if name == "printed":
+            lines.append(f"| printed | {timings[name]:.4f} | {timings[name] / timings['legacy']:.1f} | "
+                         "(WRITEs only dint and crank I_xx) | |")
+            continue
+        run = func()
+        matched = _cells_matched(as_tables(run))
+        gap = float(np.max(np.abs(run["table"] - reference["table"]) / np.abs(reference["table"]).max(axis=0)))
+        lines.append(f"| {name} | {timings[name]:.4f} | {timings[name] / timings['legacy']:.1f} | "
+                     f"{matched}/456 | {gap:.1e} |")
+    lines += ["", "## rahman1996, corrected model: the cycle integral of eq. (4.1) against the positions L", "",
+              "Closed-loop model (D079), no listing bug; G-bar of the original masses and the QP's answer "
+              "with L equal intervals, against L = 36000. The thesis uses L = 36 (the listing 37, D070).", "",
+              "| L | seconds (loads + objective + QP) | rel. error of G-bar (before) | max rel. change of the QP answer |",
+              "|---|---|---|---|"]
+    c = Constants.of(CsspInputs(), False)
+
+    def cycle(count):
+        theta = np.arange(count) * (2 * np.pi / count)
+        forms = position_forms(closed_loop_loads(c, theta), c, CSSP_CORRECTED, count).sum(axis=0)
+        return float(c.point_masses @ forms @ c.point_masses), solve_qp(2 * forms, bounds=c.qp_bounds)[0]
+
+    g_ref, x_ref = cycle(36000)
+    for count in (12, 18, 36, 72, 360, 3600):
+        seconds = _best(lambda: cycle(count), max(1, repeat // 10))
+        g, x = cycle(count)
+        lines.append(f"| {count} | {seconds:.4f} | {abs(g - g_ref) / g_ref:.1e} | {np.max(np.abs(x - x_ref) / x_ref):.1e} |")
+    return lines
+
+
+def _cells_matched(tables: dict) -> int:
+    """How many of the 456 published Rahman cells these tables give to the printed digit."""
+    count = 0
+    for key, frame in tables.items():
+        published = PublishedTable.load(f"rahman1996_table{key}")
+        for col in ("before", "after"):
+            err = np.abs(frame[col].to_numpy(float) - published.values[col].to_numpy(float))
+            count += int(np.sum(err <= published.half_unit[col].to_numpy(float) * (1 + 1e-9)))
+    return count
 
 
 CASE3_NS = (1, 2, 5, 10, 20, 50, 100, 200)

@@ -44,7 +44,7 @@ def _l2(theta2, eta2, c: Constants) -> DualMatrix:
 
 
 def _l3_real(theta3, eta3) -> np.ndarray:
-    """Eq. (2.7), the slider's ball joint (twist pi/2, no dual part); batched."""
+    """Eq. (2.7), the slider's ball joint (twist pi/2, no dual part); batched over positions."""
     c3, s3, ce, se = np.cos(theta3), np.sin(theta3), np.cos(eta3), np.sin(eta3)
     return np.stack([np.stack([c3 * ce, c3 * se, s3], -1), np.stack([s3 * ce, s3 * se, -c3], -1),
                      np.stack([-se, ce, np.zeros_like(se)], -1)], -2)
@@ -95,19 +95,25 @@ def pseudo_inverse(a: np.ndarray, printed: bool) -> np.ndarray:
 
 
 def newton_step(theta1: float, q: np.ndarray, c: Constants, printed: bool = True) -> np.ndarray:
-    """One printed step: DELTA = (A'A)^-1 A' V at q = (theta2, eta2, theta3, eta3, s4)."""
+    """One printed step: DELTA = (A'A)^-1 A' V at q = (theta2, eta2, theta3, eta3, s4).
+
+    Column j of A holds elements (1,2), (1,3), (2,3) of the real and dual parts of
+    H_j = G_j Q_j G_j': the derivative operator Q_j of joint j carried to frame {1}.
+    """
     m1, l2 = _m1(theta1, c), _l2(q[0], q[1], c)
-    l3, m4 = DualMatrix(_l3_real(q[2], q[3]), np.zeros((3, 3))), _m4(q[4], c)
     zero = np.zeros((3, 3))
+    c3, s3, ce, se = np.cos(q[2]), np.sin(q[2]), np.cos(q[3]), np.sin(q[3])
+    l3 = DualMatrix(np.array([[c3 * ce, c3 * se, s3], [s3 * ce, s3 * se, -c3], [-se, ce, 0.0]]), zero)
+    m4 = _m4(q[4], c)
     m1l2 = m1 @ l2
     h5 = m1l2 @ l3
-    ops = [m1 @ DualMatrix(_ROT_OPERATOR, zero) @ m1.T,                  # H2: theta2
-           m1 @ DualMatrix(_about_axis(q[0]), zero) @ m1.T,              # H2D: eta2
-           m1l2 @ DualMatrix(_ROT_OPERATOR, zero) @ m1l2.T,              # H3: theta3
-           m1l2 @ DualMatrix(_about_axis(q[2]), zero) @ m1l2.T,          # H3D: eta3
-           h5 @ DualMatrix(zero, _ROT_OPERATOR) @ h5.T]                  # H4DD: s4
+    carry = DualMatrix(np.stack([m1.real, m1.real, m1l2.real, m1l2.real, h5.real]),
+                       np.stack([m1.dual, m1.dual, m1l2.dual, m1l2.dual, h5.dual]))
+    operators = DualMatrix(np.stack([_ROT_OPERATOR, _about_axis(q[0]), _ROT_OPERATOR, _about_axis(q[2]), zero]),
+                           np.stack([zero, zero, zero, zero, _ROT_OPERATOR]))     # theta2 eta2 theta3 eta3 s4
+    h = carry @ operators @ carry.T
     rows, cols = (0, 0, 1), (1, 2, 2)
-    a = np.array([[*h.real[rows, cols], *h.dual[rows, cols]] for h in ops]).T      # 6 x 5
+    a = np.concatenate([h.real[:, rows, cols], h.dual[:, rows, cols]], axis=1).T   # 6 x 5
     b = h5 @ m4
     br, bd = b.real, b.dual
     v = np.array([br[1, 0] + br[0, 0] + br[1, 1] - 2.0, br[2, 0] + br[0, 0] + br[2, 2] - 2.0,
