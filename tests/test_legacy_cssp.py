@@ -88,6 +88,7 @@ def test_every_call_starts_from_a_fresh_program(run):
     again = legacy.cssp()
     np.testing.assert_array_equal(again["table"], run["table"])
     np.testing.assert_array_equal(again["solution"], run["solution"])
+    np.testing.assert_array_equal(again["hessian"], run["hessian"])       # f3x(8) reset too
 
 
 @pytest.mark.parametrize("kw", [dict(a2=2.5), dict(s1=6.0)])
