@@ -53,6 +53,21 @@ class CsspInputs:
             if not math.isfinite(getattr(self, name)):
                 raise ValueError(f"{name} must be finite, got {getattr(self, name)!r}")
 
+    @property
+    def omega(self) -> float:
+        """Crank speed (rad/s)."""
+        return self.rpm * 2.0 * math.pi / 60.0
+
+    @property
+    def alpha4(self) -> float:
+        """Ground twist (rad)."""
+        return math.radians(self.alpha4_deg)
+
+    @property
+    def k4(self) -> np.ndarray:
+        """Unit vector of the slider's travel (its joint moves along -k4 as s4 grows)."""
+        return np.array([0.0, math.sin(self.alpha4), math.cos(self.alpha4)])
+
 
 def _single(x, real4: bool) -> float:
     """A REAL*4 literal or argument (as the listing holds it) or the exact value."""

@@ -36,6 +36,7 @@ from types import SimpleNamespace
 import numpy as np
 
 from ..errors import AssemblyError, SingularPositionError
+from .cssp_data import CsspInputs
 
 TINY = 1e-9  # relative distance to a singular position below which we refuse
 
@@ -85,29 +86,8 @@ def _rz(c, s, zero, one):
     return _matrix([[c, -s, zero], [s, c, zero], [zero, zero, one]])
 
 
-@dataclass(frozen=True)
-class Geometry:
-    """Link dimensions (in), ground twist alpha4 (deg), crank offset s1 (in), speed (rpm)."""
-    a1: float = 2.0
-    a2: float = 8.0
-    a4: float = 1.0
-    alpha4_deg: float = 250.0
-    s1: float = 0.4
-    rpm: float = 3000.0
-
-    @property
-    def omega(self) -> float:
-        """Crank speed (rad/s)."""
-        return self.rpm * 2.0 * np.pi / 60.0
-
-    @property
-    def alpha4(self) -> float:
-        return np.radians(self.alpha4_deg)
-
-    @property
-    def k4(self) -> np.ndarray:
-        """Unit vector of the slider's travel (Q moves along -k4 as s4 grows)."""
-        return np.array([0.0, np.sin(self.alpha4), np.cos(self.alpha4)])
+#: link dimensions (in), ground twist (deg), crank offset (in), speed (rpm): the example's inputs
+Geometry = CsspInputs
 
 
 @dataclass(frozen=True)
