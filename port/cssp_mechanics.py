@@ -37,6 +37,7 @@ import numpy as np
 
 from ..errors import AssemblyError, SingularPositionError
 from .cssp_data import CsspInputs
+from .dual import skew
 
 TINY = 1e-9  # relative distance to a singular position below which we refuse
 
@@ -204,19 +205,13 @@ def _point_jets(model: MassModel, kin) -> np.ndarray:
     return np.concatenate(parts, axis=2)
 
 
-def _skew(r):
-    out = np.zeros(r.shape + (3,))
-    out[..., 0, 1], out[..., 0, 2], out[..., 1, 2] = -r[..., 2], r[..., 1], -r[..., 0]
-    return out - np.swapaxes(out, -1, -2)
-
-
 def _reactions(geom: Geometry, model: MassModel, kin, force, moment):
     """Solve the 18 Newton-Euler equations per angle for every unit mass: (n, 9, 18).
 
     Unknowns: F1, M1, F2, mu2, F3, F4 along (i1, k4 x i1), M4.  Rows: crank, rod, slider,
     each 3 force then 3 moment equations."""
     n, E = kin.theta1.size, np.eye(3)
-    Px, Qx, n2 = _skew(kin.P), _skew(kin.Q), kin.n2
+    Px, Qx, n2 = skew(kin.P), skew(kin.Q), kin.n2
     e4 = np.stack([E[0], np.cross(geom.k4, E[0])], axis=-1)  # (3, 2)
     A = np.zeros((n, 18, 18))
     A[:, 0:3, 0:3], A[:, 0:3, 6:9] = E, -E

@@ -32,11 +32,6 @@ class DualMatrix:
         skew = self.dual @ np.swapaxes(self.real, -1, -2)
         return np.stack([skew[..., 2, 1], skew[..., 0, 2], skew[..., 1, 0]], axis=-1)
 
-    @staticmethod
-    def screw(rotation: np.ndarray, translation: np.ndarray) -> "DualMatrix":
-        """The dual matrix of a rotation followed by the translation d: (R, [d] R)."""
-        return DualMatrix(rotation, skew(translation) @ rotation)
-
 
 def skew(v: np.ndarray) -> np.ndarray:
     """[v], the 3x3 matrix of the cross product v x . (..., 3) -> (..., 3, 3)."""
@@ -45,27 +40,3 @@ def skew(v: np.ndarray) -> np.ndarray:
     return np.stack([np.stack([zero, -v[..., 2], v[..., 1]], -1),
                      np.stack([v[..., 2], zero, -v[..., 0]], -1),
                      np.stack([-v[..., 1], v[..., 0], zero], -1)], axis=-2)
-
-
-def rot_z(angle) -> np.ndarray:
-    """Rotation about z through ``angle`` (rad), batched: (...) -> (..., 3, 3)."""
-    c, s = np.cos(angle), np.sin(angle)
-    zero, one = np.zeros_like(c), np.ones_like(c)
-    return np.stack([np.stack([c, -s, zero], -1), np.stack([s, c, zero], -1),
-                     np.stack([zero, zero, one], -1)], axis=-2)
-
-
-def rot_y(angle) -> np.ndarray:
-    """Rotation about y through ``angle`` (rad), batched."""
-    c, s = np.cos(angle), np.sin(angle)
-    zero, one = np.zeros_like(c), np.ones_like(c)
-    return np.stack([np.stack([c, zero, s], -1), np.stack([zero, one, zero], -1),
-                     np.stack([-s, zero, c], -1)], axis=-2)
-
-
-def rot_x(angle) -> np.ndarray:
-    """Rotation about x through ``angle`` (rad), batched."""
-    c, s = np.cos(angle), np.sin(angle)
-    zero, one = np.zeros_like(c), np.ones_like(c)
-    return np.stack([np.stack([one, zero, zero], -1), np.stack([zero, c, -s], -1),
-                     np.stack([zero, s, c], -1)], axis=-2)

@@ -39,6 +39,20 @@ def test_printed_equals_legacy(geometry):
     assert port["diag"] == pytest.approx(ref["diag"], rel=1e-6)
 
 
+def test_dual_matrices_compose_screws():
+    """Eq. (2.15): the dual part of M1 carries the crank pin (eq. 2.44); a dual product is
+    the composition of the two screw displacements (t = tA + RA tB)."""
+    from linkrepro.port.cssp_listing import _l2, _m1
+    from linkrepro.port.dual import skew
+    c = Constants.of(CsspInputs(), False)
+    m1, l2 = _m1(0.7, c), _l2(1.9, 0.3, c)
+    np.testing.assert_allclose(m1.translation(), [2 * np.cos(0.7), 2 * np.sin(0.7), 0.4], rtol=1e-15)
+    np.testing.assert_allclose((m1 @ l2).translation(), m1.translation() + m1.real @ l2.translation(), rtol=1e-14)
+    np.testing.assert_allclose((m1 @ m1.T).real, np.eye(3), atol=1e-15)
+    np.testing.assert_allclose((m1 @ m1.T).dual, 0.0, atol=1e-15)
+    np.testing.assert_allclose(skew([1.0, 2.0, 3.0]) @ [4.0, 5.0, 6.0], np.cross([1, 2, 3], [4, 5, 6]))
+
+
 def test_printed_inverse_is_the_inverse_and_the_legacy_routine():
     rng = np.random.default_rng(4)
     for _ in range(20):
