@@ -81,10 +81,11 @@ def printed_inverse(s: np.ndarray) -> np.ndarray:
         c[rows, 5 + k] = -c[rows, k] / c[k, k]
     if c[4, 4] == 0.0:
         raise ZeroDivisionError("INVERSE: zero pivot")
-    for k in range(4, 0, -1):                             # back substitution, pivots 5..2
-        cols = slice(k + 1 if k < 4 else 5, 10)
-        c[:k, cols] = c[:k, cols] - (c[k, cols] * c[:k, k, None]) / c[k, k] if k == 4 else \
-            c[:k, cols] - (c[:k, k, None] * c[k, cols]) / c[k, k]
+    right = slice(5, 10)                                  # back substitution: pivot 5 ...
+    c[:4, right] = c[:4, right] - (c[4, right] * c[:4, 4, None]) / c[4, 4]
+    for k in range(3, 0, -1):                             # ... then pivots 4, 3, 2
+        cols = slice(k + 1, 10)
+        c[:k, cols] = c[:k, cols] - (c[:k, k, None] * c[k, cols]) / c[k, k]
     return c[:, 5:] / np.diag(c)[:, None]
 
 

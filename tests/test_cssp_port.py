@@ -187,13 +187,15 @@ def test_linkage_that_cannot_close():
         legacy.cssp(a2=2.5)
 
 
-@pytest.mark.parametrize("geometry,angle", [({"a2": 3.2}, 220.0), ({"a2": 3.05}, 230.0), ({"alpha4_deg": 300.0}, 70.0)])
-def test_printed_newton_fails_where_legacy_fails(geometry, angle):
+@pytest.mark.parametrize("geometry", [{"a2": 3.2}, {"a2": 3.05}, {"alpha4_deg": 300.0}])
+def test_printed_newton_fails_where_legacy_fails(geometry):
     """Near the edge of assembly the printed Newton wanders for 150 iterations; with the
-    listing's INVERSE the port stops at the same crank angle as the legacy build, while the
-    closed loop assembles there."""
+    listing's INVERSE the port gives up at the same crank angle as the legacy build, while
+    the closed loop assembles at every position."""
+    angles = []
     for run in (lambda: legacy.cssp(**geometry), lambda: balance(CsspInputs(**geometry))):
         with pytest.raises(ConvergenceError) as info:
             run()
-        assert info.value.angle_deg == angle
+        angles.append(info.value.angle_deg)
+    assert angles[0] == pytest.approx(angles[1], abs=1e-4)
     balance(CsspInputs(**geometry), CSSP_CORRECTED)
