@@ -15,13 +15,12 @@ import pandas as pd
 
 from .. import legacy
 from ..legacy.rahman1996 import CSSP_COLUMNS, INERTIA_ROWS
-from ..port.cssp import CsspInputs, balance
+from ..port.cssp import CRANK_DEG, CsspInputs, balance
 from ..port.cssp_quirks import CSSP_CORRECTED, CSSP_PRINTED
 from .engines import PrintedProgramError, run_program
 from .scene import Scene
 
 PROGRAM = "rahman1996_cssp_main"
-CRANK_DEG = np.arange(0.0, 361.0, 10.0)
 SERIES_COLUMNS = ["crank_deg", "before", "after"]
 INERTIA_COLUMNS = ["link", "quantity", "before", "after"]
 #: relative difference within the REAL*4 sensitivity measured in register D056

@@ -29,7 +29,7 @@ __all__ = ["CsspInputs", "balance", "solve_qp", "hessian_shift", "CRANK_DEG", "C
 
 #: the listing's positions: TH1 = J*10 - 10, J = 1..37
 CRANK_DEG = np.arange(37) * 10.0
-#: TABLE columns, as legacy.rahman1996.CSSP_COLUMNS: (table, before/after)
+#: the series tables, in the order of ``table``'s column pairs (legacy.rahman1996.CSSP_COLUMNS)
 TABLES = ("5_2", "5_3", "5_4", "5_5", "5_6", "5_7")
 
 
@@ -40,7 +40,7 @@ def hessian_shift(h: np.ndarray) -> float:
     shortfall and restarts.  0 for a positive definite H.
     """
     n = len(h)
-    scale = max(np.max(np.abs(np.diag(h))), 0.0) or 1.0
+    scale = np.max(np.abs(np.diag(h))) or 1.0
     tiny, diag = np.sqrt(np.finfo(float).eps) * scale, 0.0
     while True:
         low = np.zeros_like(h)

@@ -112,9 +112,10 @@ class Constants:
         point_masses = np.array([*[quarter[0]] * 3, masses[0] - 3 * quarter[0],
                                  *[quarter[1]] * 3, masses[1] - 3 * quarter[1], masses[2]])
         bl = s(BEARING_LENGTH)
+        # THT1D=6.0*RPM*DEGRAD: 6.0*RPM a REAL*4 product
+        omega = (float(np.float32(6.0) * np.float32(inputs.rpm)) if real4 else 6.0 * inputs.rpm) * degrad
         return cls(a1=s(inputs.a1), a2=s(inputs.a2), a4=s(inputs.a4), s1=s(inputs.s1),
-                   alpha4=inputs.alpha4_deg * degrad, omega=float(np.float32(6.0) * np.float32(s(inputs.rpm)))
-                   * degrad if real4 else 6.0 * inputs.rpm * degrad, pi=pi, masses=masses,
+                   alpha4=inputs.alpha4_deg * degrad, omega=omega, pi=pi, masses=masses,
                    inertia_crank=inertia_crank, inertia_rod=inertia_rod,
                    rod_radii_distal=tuple(s(k) for k in RADII_ROD_DISTAL), cg=CG_OFFSETS,
                    crank_arms=crank_arms, rod_arms=rod_arms, point_masses=point_masses,

@@ -19,12 +19,12 @@ import numpy as np
 
 from ..errors import ConvergenceError
 from .cssp_data import Constants
+from .cssp_objective import UnitLoads
 from .cssp_quirks import CsspQuirks
 from .dual import DualMatrix
 
 MAX_ITERATIONS = 150
 _ROT_OPERATOR = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 0.0]])
-_PAIRS = (0, 1, 2, 4, 5, 6)          # design variables that are pairs of half masses
 
 
 def _m1(theta1, c: Constants) -> DualMatrix:
@@ -288,13 +288,12 @@ class Carry:
 
 def unit_loads(m: Motion, c: Constants, quirks: CsspQuirks, carry: Carry):
     """The listing's per-unit loads at every position of one pass; returns (UnitLoads, Carry)."""
-    from .cssp_objective import UnitLoads
     n, q = len(m.theta1), quirks
     ca, sa = np.cos(c.alpha4), np.sin(c.alpha4)
     c1, s1 = np.cos(m.theta1), np.sin(m.theta1)
     c2, s2, ce2, se2 = np.cos(m.theta2), np.sin(m.theta2), np.cos(m.eta2), np.sin(m.eta2)
     c3, s3, ce3, se3 = np.cos(m.theta3), np.sin(m.theta3), np.cos(m.eta3), np.sin(m.eta3)
-    s4, d_s4, dd_s4 = m.s4, m.rates[:, 4], m.accels[:, 4]
+    s4, dd_s4 = m.s4, m.accels[:, 4]
 
     # the crank's point masses (KINEMATIC) and the rod's (CORRLS, through the ground side)
     r1, r1d, r1dd = _crank_frames(m.theta1, c.omega)
@@ -440,7 +439,6 @@ def _pin_eta(m: Motion, c: Constants) -> np.ndarray:
     dd_t3, dd_e3, dd_s4 = m.accels[:, 1], m.accels[:, 3], m.accels[:, 4]
     v2yp, v2zp, v2xd, v2yd = -d_e3, -d_t3, -d_s4 * s3, d_s4 * c3
     h2xp, h2yp, h2zp = -d_s4 * s3, -g2 * d_t3 + d_s4 * c3, d_e3 * g2
-    h2yd, h2zd = -(k2y ** 2) * d_e3, -(k2z ** 2) * d_t3 + g2 * d_s4 * c3
     h2dxp = -dd_s4 * s3 - d_s4 * d_t3 * c3
     h2dyp = -g2 * dd_t3 - d_t3 * d_s4 * s3 + dd_s4 * c3
     h2dyd, h2dzp = -(k2y ** 2) * dd_e3, g2 * dd_e3

@@ -61,9 +61,7 @@ def objective(forms: np.ndarray, x: np.ndarray, quirks: CsspQuirks, single: bool
     """
     if quirks.objective_offdiag_doubling:
         forms = 2.0 * forms - forms * np.eye(forms.shape[-1])
-    xx = np.outer(x, x)
-    if single:
-        xx = np.outer(x.astype(np.float32), x.astype(np.float32)).astype(float)
+    xx = np.outer(x.astype(np.float32), x.astype(np.float32)).astype(float) if single else np.outer(x, x)
     return np.einsum("ij,nij->n", xx, forms)
 
 

@@ -11,7 +11,7 @@ from linkrepro.port.cssp import CRANK_DEG, CsspInputs, _listing_motions, balance
 from linkrepro.port.cssp_data import QP_EQUALITIES, QP_ROWS, Constants
 from linkrepro.port.cssp_listing import printed_inverse
 from linkrepro.port.cssp_mechanics import Geometry, MassModel, kinematics
-from linkrepro.port.cssp_quirks import CSSP_CORRECTED, CSSP_PRINTED
+from linkrepro.port.cssp_quirks import CSSP_CORRECTED
 
 
 @pytest.fixture(scope="module")
