@@ -95,27 +95,31 @@ def pseudo_inverse(a: np.ndarray, printed: bool) -> np.ndarray:
     return printed_inverse(ata) @ a.T if printed else np.linalg.solve(ata, a.T)
 
 
-def newton_step(theta1: float, q: np.ndarray, c: Constants, printed: bool = True) -> np.ndarray:
-    """One printed step: DELTA = (A'A)^-1 A' V at q = (theta2, eta2, theta3, eta3, s4).
-
-    Column j of A holds elements (1,2), (1,3), (2,3) of the real and dual parts of
-    H_j = G_j Q_j G_j': the derivative operator Q_j of joint j carried to frame {1}.
-    """
+def loop_operators(theta1: float, q: np.ndarray, c: Constants) -> tuple[DualMatrix, DualMatrix]:
+    """H_j = G_j Q_j G_j' for q = (theta2, eta2, theta3, eta3, s4), stacked (5, 3, 3), and the
+    loop product B = M1 L2 L3 M4: d B / d q_j = H_j B (eqs. 2.18-2.24; Rahman 1991 eqs. 11-18)."""
     m1, l2 = _m1(theta1, c), _l2(q[0], q[1], c)
     zero = np.zeros((3, 3))
     c3, s3, ce, se = np.cos(q[2]), np.sin(q[2]), np.cos(q[3]), np.sin(q[3])
     l3 = DualMatrix(np.array([[c3 * ce, c3 * se, s3], [s3 * ce, s3 * se, -c3], [-se, ce, 0.0]]), zero)
-    m4 = _m4(q[4], c)
     m1l2 = m1 @ l2
     h5 = m1l2 @ l3
     carry = DualMatrix(np.stack([m1.real, m1.real, m1l2.real, m1l2.real, h5.real]),
                        np.stack([m1.dual, m1.dual, m1l2.dual, m1l2.dual, h5.dual]))
     operators = DualMatrix(np.stack([_ROT_OPERATOR, _about_axis(q[0]), _ROT_OPERATOR, _about_axis(q[2]), zero]),
                            np.stack([zero, zero, zero, zero, _ROT_OPERATOR]))     # theta2 eta2 theta3 eta3 s4
-    h = carry @ operators @ carry.T
+    return carry @ operators @ carry.T, h5 @ _m4(q[4], c)
+
+
+def newton_step(theta1: float, q: np.ndarray, c: Constants, printed: bool = True) -> np.ndarray:
+    """One printed step: DELTA = (A'A)^-1 A' V at q = (theta2, eta2, theta3, eta3, s4).
+
+    Column j of A holds elements (1,2), (1,3), (2,3) of the real and dual parts of
+    H_j = G_j Q_j G_j': the derivative operator Q_j of joint j carried to frame {1}.
+    """
+    h, b = loop_operators(theta1, q, c)
     rows, cols = (0, 0, 1), (1, 2, 2)
     a = np.concatenate([h.real[:, rows, cols], h.dual[:, rows, cols]], axis=1).T   # 6 x 5
-    b = h5 @ m4
     br, bd = b.real, b.dual
     v = np.array([br[1, 0] + br[0, 0] + br[1, 1] - 2.0, br[2, 0] + br[0, 0] + br[2, 2] - 2.0,
                   br[2, 1] + br[1, 1] + br[2, 2] - 2.0, bd[1, 0], bd[2, 0], bd[2, 1]])

@@ -139,8 +139,11 @@ class MassModel:
         return pts
 
 
-def kinematics(geom: Geometry, theta1_rad) -> SimpleNamespace:
+def kinematics(geom: Geometry, theta1_rad, s1_jet=None) -> SimpleNamespace:
     """Positions (in), velocities (in/s), accelerations (in/s^2) over crank angles (rad).
+
+    ``s1_jet``: the crank's axial offset S1 and its first two time derivatives (3, n), for a
+    crank that slides as it turns (Rahman 1991, eq. 28); by default the constant geom.s1.
 
     Attributes X, Xd, Xdd for X in P, Q, s4, u, M1R, R2, theta2, eta2; w2, alpha2 (rad/s,
     rad/s^2, rod angular velocity and acceleration); n2; ``jets`` holds them as (3, n, ...).
@@ -152,9 +155,10 @@ def kinematics(geom: Geometry, theta1_rad) -> SimpleNamespace:
     t = np.stack([th, np.full(n, geom.omega), np.zeros(n)])
     cth, sth = _cos(t), _sin(t)
     sa, ca = np.sin(geom.alpha4), np.cos(geom.alpha4)
-    P = np.stack([geom.a1 * cth, geom.a1 * sth, geom.s1 * one], axis=-1)
-    b = geom.a1 * sa * sth + geom.s1 * ca * one
-    c = 2.0 * geom.a1 * geom.a4 * cth + (geom.a4 ** 2 + geom.a1 ** 2 + geom.s1 ** 2 - geom.a2 ** 2) * one
+    s1 = geom.s1 * one if s1_jet is None else np.asarray(s1_jet, dtype=float).reshape(3, n)
+    P = np.stack([geom.a1 * cth, geom.a1 * sth, s1], axis=-1)
+    b = geom.a1 * sa * sth + ca * s1
+    c = 2.0 * geom.a1 * geom.a4 * cth + _mul(s1, s1) + (geom.a4 ** 2 + geom.a1 ** 2 - geom.a2 ** 2) * one
     disc = _mul(b, b) - c
     if np.any(disc[0] < 0.0):
         i = int(np.argmax(disc[0] < 0.0))

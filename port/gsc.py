@@ -1,0 +1,134 @@
+"""Rahman (1991): displacement, velocity, acceleration and joint-force analysis of the
+generalized slider crank, one configuration (``analyse``) or the example's grid (``sweep``).
+
+A result is a pandas DataFrame, one row per crank angle, columns ``COLUMNS``: the
+configuration (a4 in, alpha4 deg, s1 in), crank_deg, converged, S4 (in), theta2, eta2,
+theta3, eta3 (deg; theta in [0, 360)), and the 18 joint-force components of
+``gsc_forces.COMPONENTS`` (lbf, lbf*in, each in its thesis frame).  Diagnostics follow:
+status (``gsc_position`` statuses, or "dead centre" where a constant crank torque cannot be
+balanced) and closure (||M1 L2 L3 M4 - I|| at the answer).  Rows that did not converge hold
+NaN (empty in CSV) after ``converged``.
+"""
+from __future__ import annotations
+
+import itertools
+
+import numpy as np
+import pandas as pd
+
+from ..errors import AssemblyError, ConvergenceError, SingularPositionError
+from . import gsc_forces, gsc_position, gsc_printed_rates, gsc_rates
+from .cssp_data import CsspInputs
+from .cssp_mechanics import kinematics
+from .gsc_data import GscInputs
+from .gsc_quirks import GSC_PRINTED, GscQuirks
+
+KINEMATICS = ["s4", "theta2", "eta2", "theta3", "eta3"]
+COLUMNS = (["a4", "alpha4_deg", "s1", "crank_deg", "converged"] + KINEMATICS + gsc_forces.COMPONENTS)
+DEAD_CENTRE = "dead centre"
+#: the example's grid (section 3.1, 3.2)
+GRID_A4 = (0.0, 10.0, 20.0, 30.0)
+GRID_ALPHA4 = (232.0, 270.0, 310.0)
+GRID_S1 = (0.0, 3.0, 3.5, 6.0, 9.0)
+CRANK_DEG = np.arange(0.0, 361.0, 1.0)
+
+
+def printed_rates(q, inputs: GscInputs, theta1, sine_denominators: bool):
+    """q', q'' (n, 5 each, q's order) of the five-variable loop: the printed closed forms or
+    least squares (``gsc_rates``)."""
+    s1, s1_d, s1_dd = inputs.axial(theta1)
+    w = inputs.omega
+    if not sine_denominators:
+        return gsc_rates.rates(q, w, 0.0, s1_d, s1_dd, inputs.a1, inputs.a2)
+    t2, e2, t3, e3, _ = q.T
+    with np.errstate(divide="ignore", invalid="ignore"):
+        v = gsc_printed_rates.velocities(t2, e2, t3, e3, w, s1_d, inputs.a1, inputs.a2)
+        a = gsc_printed_rates.accelerations(t2, e2, t3, e3, v, w, 0.0, s1_d, s1_dd, inputs.a1, inputs.a2)
+    order = list(gsc_rates.ORDER)
+    return np.stack(v, axis=1)[:, order], np.stack(a, axis=1)[:, order]
+
+
+def _five_variable(inputs: GscInputs, th: np.ndarray, quirks: GscQuirks):
+    run = gsc_position.positions(inputs, th)
+    ok = run.converged
+    forces = {name: np.full(th.size, np.nan) for name in gsc_forces.COMPONENTS}
+    if np.any(ok):
+        q_d, q_dd = printed_rates(run.q[ok], inputs, th[ok], quirks.sine_denominator_rates)
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+            got = gsc_forces.printed_forces(inputs, th[ok], run.q[ok], q_d, q_dd,
+                                            com_beyond_joint=quirks.com_beyond_joint,
+                                            action_reaction=not quirks.joint_force_signs)
+        for name in gsc_forces.COMPONENTS:
+            forces[name][ok] = got[name]
+    return run.q, run.status.astype(str), run.closure, forces
+
+
+def ball_angles(kin) -> tuple[np.ndarray, np.ndarray]:
+    """theta3, eta3 (rad) of the exact loop: the slider's i4 (= i1) seen from the rod frame,
+    i4 = R2 (c th3 c eta3, s th3 c eta3, -s eta3) as the first column of L3 (eq. 3)."""
+    v = kin.R2[:, 0, :]                    # R2' e1: row 0 of R2
+    return np.mod(np.arctan2(v[:, 1], v[:, 0]), 2.0 * np.pi), -np.arcsin(np.clip(v[:, 2], -1.0, 1.0))
+
+
+def _closed_loop(inputs: GscInputs, th: np.ndarray):
+    n = th.size
+    q, status, closure = np.full((n, 5), np.nan), np.full(n, gsc_position.CANNOT_ASSEMBLE, dtype=object), np.full(n, np.nan)
+    forces = {name: np.full(n, np.nan) for name in gsc_forces.COMPONENTS}
+    ok = gsc_position.assembles(inputs, th, inputs.axial(th)[0])
+    if np.any(ok):
+        geom = CsspInputs(a1=inputs.a1, a2=inputs.a2, a4=inputs.a4, alpha4_deg=inputs.alpha4_deg,
+                          s1=inputs.s1, rpm=inputs.rpm)
+        kin = kinematics(geom, th[ok], np.stack(inputs.axial(th[ok])))
+        theta3, eta3 = ball_angles(kin)
+        q[ok] = np.stack([kin.theta2, kin.eta2, theta3, eta3, kin.s4], axis=1)
+        closure[ok] = 0.0
+        with np.errstate(divide="ignore", invalid="ignore"):
+            got = gsc_forces.corrected_forces(inputs, kin, strict=False)
+        dead = gsc_forces.dead_centre(kin)
+        status[ok] = np.where(dead, DEAD_CENTRE, "closed")
+        for name in gsc_forces.COMPONENTS:
+            forces[name][ok] = np.where(dead, np.nan, got[name])
+    return q, status.astype(str), closure, forces
+
+
+def analyse(inputs: GscInputs = GscInputs(), crank_deg=CRANK_DEG, quirks: GscQuirks = GSC_PRINTED,
+            strict: bool = False) -> pd.DataFrame:
+    """One configuration over crank angles (deg, in sweep order).  ``strict``: raise the typed
+    error of the first failed angle (AssemblyError, ConvergenceError, SingularPositionError)
+    instead of returning non-converged rows."""
+    th = np.radians(np.asarray(crank_deg, dtype=float))
+    if quirks.five_variable_loop:
+        q, status, closure, forces = _five_variable(inputs, th, quirks)
+    else:
+        q, status, closure, forces = _closed_loop(inputs, th)
+    converged = np.isin(status, [gsc_position.NEWTON, gsc_position.DFP_THEN_NEWTON, "closed", DEAD_CENTRE])
+    if strict:
+        _raise_first(status, np.degrees(th))
+    frame = pd.DataFrame({"a4": inputs.a4, "alpha4_deg": inputs.alpha4_deg, "s1": inputs.s1,
+                          "crank_deg": np.degrees(th), "converged": converged})
+    frame["s4"] = q[:, 4]
+    frame["theta2"], frame["theta3"] = np.degrees(np.mod(q[:, 0], 2 * np.pi)), np.degrees(np.mod(q[:, 2], 2 * np.pi))
+    frame["eta2"], frame["eta3"] = np.degrees(q[:, 1]), np.degrees(q[:, 3])
+    for name in gsc_forces.COMPONENTS:
+        frame[name] = forces[name]
+    frame = frame[COLUMNS].copy()
+    frame["status"], frame["closure"] = status, closure
+    return frame
+
+
+def _raise_first(status: np.ndarray, deg: np.ndarray) -> None:
+    errors = {gsc_position.CANNOT_ASSEMBLE: (AssemblyError, "GSC: the rod cannot reach the slider axis"),
+              gsc_position.NOT_CONVERGED: (ConvergenceError, "GSC: Newton-Raphson and DFP did not converge"),
+              DEAD_CENTRE: (SingularPositionError, "GSC: dead centre, the crank torque cannot be balanced")}
+    for i, s in enumerate(status):
+        if s in errors:
+            kind, message = errors[s]
+            raise kind(message, float(deg[i]))
+
+
+def sweep(quirks: GscQuirks = GSC_PRINTED, a4=GRID_A4, alpha4_deg=GRID_ALPHA4, s1=GRID_S1,
+          crank_deg=CRANK_DEG) -> pd.DataFrame:
+    """Every grid point of section 3.1 (a4 x alpha4 x S1), each over the crank angles."""
+    frames = [analyse(GscInputs(a4=x, alpha4_deg=y, s1=z), crank_deg, quirks)
+              for x, y, z in itertools.product(a4, alpha4_deg, s1)]
+    return pd.concat(frames, ignore_index=True)
