@@ -122,12 +122,13 @@ def positions(inputs: GscInputs, theta1, use_dfp: bool = True) -> PositionRun:
     out, status = np.full((n, 5), np.nan), np.full(n, NOT_CONVERGED, dtype=object)
     closure, steps = np.full(n, np.nan), np.zeros(n, dtype=int)
     ok = assembles(inputs, th, s1)
-    guess = initial_estimate(constants(inputs, s1[0]), real4=False)
+    base = constants(inputs, s1[0])
+    guess = initial_estimate(base, real4=False)
     for i in range(n):
         if not ok[i]:
             status[i] = CANNOT_ASSEMBLE
             continue
-        c = constants(inputs, s1[i])
+        c = base if s1[i] == base.s1 else replace(base, s1=float(s1[i]))
         q, done, steps[i] = newton(th[i], guess, c)
         if done:
             status[i] = NEWTON
