@@ -20,16 +20,17 @@ def main(argv: list[str] | None = None) -> int:
 
     from .scenes import SCENES
     if args.command == "scenes":
-        from . import appendix, rahman1996_figures
+        from . import appendix, rahman1991, rahman1996_figures
         for scene in SCENES.values():
             print(f"{scene.name:22s} {scene.title}")
         print(f"{appendix.NAME:22s} {appendix.TITLE} (engine against engine)")
         print(f"{rahman1996_figures.NAME:22s} Rahman (1996) Figures 5.1-5.6 and the section 5.3 percentages")
+        print(f"{rahman1991.NAME:22s} {rahman1991.TITLE}")
         return 0
     if args.command == "reproduce":
         from .run import reproduce, unexplained_count
-        from . import appendix, rahman1996_figures
-        extra = [appendix.NAME, rahman1996_figures.NAME]
+        from . import appendix, rahman1991, rahman1996_figures
+        extra = [appendix.NAME, rahman1996_figures.NAME, rahman1991.NAME]
         unknown = [s for s in args.scenes if s not in SCENES and s not in extra]
         if unknown:
             parser.error(f"unknown scene(s): {', '.join(unknown)}; known: {', '.join([*SCENES, *extra])}")

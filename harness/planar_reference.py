@@ -115,3 +115,18 @@ def analyse(theta1_deg, a1=12.0, a2=50.0, a4=0.0, rpm=50.0, torque=100.0,
                 F_frame_on_crank=x[:, 0:2], F_crank_on_rod=x[:, 2:4],
                 F_rod_on_slider=x[:, 4:6], guide_normal_on_slider=x[:, 6],
                 piston_on_slider=x[:, 7], guide_moment_on_slider=x[:, 8])
+
+
+def in_thesis_frames(ref):
+    """The reference's forces as Rahman's (1991) joint vectors for alpha4 = 270 deg (dict of
+    arrays keyed like ``port.gsc_forces.COMPONENTS``, plus s4).  His vectors are the loads the
+    link nearer the crank exerts (crank on frame, crank on rod, rod on slider, slider on
+    frame); call ``analyse`` with torque = -T1k (its torque acts on the crank).  2F2 is in the
+    crank's frame, 3F3 in the rod's (i along Q - P), 4F4 in the slider's: i4 = x, k4 = -y."""
+    c1, s1 = np.cos(ref["theta1"]), np.sin(ref["theta1"])
+    cr, sr = np.cos(ref["th_rod"]), np.sin(ref["th_rod"])
+    f1, f2, f3 = -ref["F_frame_on_crank"], ref["F_crank_on_rod"], ref["F_rod_on_slider"]
+    return {"s4": ref["s4"], "F1i": f1[:, 0], "F1j": f1[:, 1],
+            "F2i": c1 * f2[:, 0] + s1 * f2[:, 1], "F2j": -s1 * f2[:, 0] + c1 * f2[:, 1],
+            "F3i": cr * f3[:, 0] + sr * f3[:, 1], "F3j": -sr * f3[:, 0] + cr * f3[:, 1],
+            "F4i": -ref["guide_normal_on_slider"], "F4k": ref["piston_on_slider"]}

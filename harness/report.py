@@ -19,7 +19,7 @@ STYLE = {"printed": dict(marker="x", ls="none", color="tab:gray"),
          "port_corrected": dict(ls="-", color="tab:green", alpha=0.8)}
 
 
-def _md_table(frame: pd.DataFrame, floatfmt: str = "{:.3g}") -> str:
+def markdown_table(frame: pd.DataFrame, floatfmt: str = "{:.3g}") -> str:
     cols = [str(c) for c in frame.columns]
     head = "| " + " | ".join([frame.index.name or ""] + cols) + " |"
     rule = "|" + "---|" * (len(cols) + 1)
@@ -90,14 +90,14 @@ def scene_report(scene, diff: pd.DataFrame, timings: dict[str, float], register:
     out += [f"- {n}" for n in scene.notes]
     out += ["", "## Cells against the published table",
             "", "A cell matches when it is within half a unit of the printed last digit.", "",
-            _md_table(counts, "{}"), "",
+            markdown_table(counts, "{}"), "",
             "Registered cells by the kind of entry that explains them (a cell explained by "
             "entries of several kinds counts under each):", "",
-            _md_table(registered_by_kind(diff, register), "{}"), "",
+            markdown_table(registered_by_kind(diff, register), "{}"), "",
             "## Largest |engine - published| per column (over produced cells)", "",
-            _md_table(column_max(diff, "abs_diff")), "",
+            markdown_table(column_max(diff, "abs_diff")), "",
             "## Largest |engine - legacy| per column", "",
-            _md_table(column_max(diff, "diff_vs_legacy"), "{:.2e}"), "",
+            markdown_table(column_max(diff, "diff_vs_legacy"), "{:.2e}"), "",
             "## Wall time per engine (s, this run)", "",
             "| engine | seconds |", "|---|---|"]
     out += [f"| {k} | {v:.4f} |" for k, v in timings.items()]
@@ -105,7 +105,7 @@ def scene_report(scene, diff: pd.DataFrame, timings: dict[str, float], register:
     if unexplained.empty:
         out.append("None.")
     else:
-        out.append(_md_table(unexplained.set_index("engine")[[scene.key_name, "column", "published_text", "value"]],
+        out.append(markdown_table(unexplained.set_index("engine")[[scene.key_name, "column", "published_text", "value"]],
                              "{:.6g}"))
     if extra:
         out += ["", extra]

@@ -27,41 +27,50 @@ MAX_ITERATIONS = 150
 _ROT_OPERATOR = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 0.0]])
 
 
+def _mat3(rows) -> np.ndarray:
+    """A 3 x 3 matrix from nested rows of scalars or equal-shaped arrays: (..., 3, 3)."""
+    shape = next((x.shape for row in rows for x in row if isinstance(x, np.ndarray) and x.ndim), ())
+    out = np.empty(shape + (3, 3))
+    for i, row in enumerate(rows):
+        for j, x in enumerate(row):
+            out[..., i, j] = x
+    return out
+
+
 def _m1(theta1, c: Constants) -> DualMatrix:
     """Eq. (2.3), the crank."""
     ct, st, z = np.cos(theta1), np.sin(theta1), 0.0
-    return DualMatrix(np.array([[ct, -st, z], [st, ct, z], [z, z, 1.0]]),
-                      np.array([[-c.s1 * st, -c.s1 * ct, c.a1 * st], [c.s1 * ct, -c.s1 * st, -c.a1 * ct],
-                                [z, c.a1, z]]))
+    return DualMatrix(_mat3([[ct, -st, z], [st, ct, z], [z, z, 1.0]]),
+                      _mat3([[-c.s1 * st, -c.s1 * ct, c.a1 * st], [c.s1 * ct, -c.s1 * st, -c.a1 * ct],
+                             [z, c.a1, z]]))
 
 
 def _l2(theta2, eta2, c: Constants) -> DualMatrix:
     """Eq. (2.6), the connecting rod (row 3 of the real part reconstructed, D081)."""
     c2, s2, ce, se = np.cos(theta2), np.sin(theta2), np.cos(eta2), np.sin(eta2)
-    return DualMatrix(np.array([[c2 * ce, -s2, c2 * se], [s2 * ce, c2, s2 * se], [-se, 0.0, ce]]),
-                      np.array([[0.0, c.a2 * c2 * se, c.a2 * s2], [0.0, c.a2 * s2 * se, -c.a2 * c2],
-                                [0.0, c.a2 * ce, 0.0]]))
+    return DualMatrix(_mat3([[c2 * ce, -s2, c2 * se], [s2 * ce, c2, s2 * se], [-se, 0.0, ce]]),
+                      _mat3([[0.0, c.a2 * c2 * se, c.a2 * s2], [0.0, c.a2 * s2 * se, -c.a2 * c2],
+                             [0.0, c.a2 * ce, 0.0]]))
 
 
 def _l3_real(theta3, eta3) -> np.ndarray:
     """Eq. (2.7), the slider's ball joint (twist pi/2, no dual part); batched over positions."""
     c3, s3, ce, se = np.cos(theta3), np.sin(theta3), np.cos(eta3), np.sin(eta3)
-    return np.stack([np.stack([c3 * ce, c3 * se, s3], -1), np.stack([s3 * ce, s3 * se, -c3], -1),
-                     np.stack([-se, ce, np.zeros_like(se)], -1)], -2)
+    return _mat3([[c3 * ce, c3 * se, s3], [s3 * ce, s3 * se, -c3], [-se, ce, 0.0]])
 
 
 def _m4(s4, c: Constants) -> DualMatrix:
     """Eq. (2.4), the ground link (theta4 = 0)."""
     ca, sa = np.cos(c.alpha4), np.sin(c.alpha4)
-    return DualMatrix(np.array([[1.0, 0.0, 0.0], [0.0, ca, -sa], [0.0, sa, ca]]),
-                      np.array([[0.0, -s4 * ca, s4 * sa], [s4, -c.a4 * sa, -c.a4 * ca],
-                                [0.0, c.a4 * ca, -c.a4 * sa]]))
+    return DualMatrix(_mat3([[1.0, 0.0, 0.0], [0.0, ca, -sa], [0.0, sa, ca]]),
+                      _mat3([[0.0, -s4 * ca, s4 * sa], [s4, -c.a4 * sa, -c.a4 * ca],
+                             [0.0, c.a4 * ca, -c.a4 * sa]]))
 
 
 def _about_axis(theta) -> np.ndarray:
     """The listing's Q2R / Q4R operators: derivative of L2 wrt eta2 (L3 wrt eta3)."""
     ct, st = np.cos(theta), np.sin(theta)
-    return np.array([[0.0, 0.0, ct], [0.0, 0.0, st], [-ct, -st, 0.0]])
+    return _mat3([[0.0, 0.0, ct], [0.0, 0.0, st], [-ct, -st, 0.0]])
 
 
 def printed_inverse(s: np.ndarray) -> np.ndarray:
@@ -90,40 +99,48 @@ def printed_inverse(s: np.ndarray) -> np.ndarray:
 
 
 def pseudo_inverse(a: np.ndarray, printed: bool) -> np.ndarray:
-    """(A'A)^-1 A' of a 6 x 5 matrix: with the listing's INVERSE, or by LU with pivoting."""
-    ata = a.T @ a
-    return printed_inverse(ata) @ a.T if printed else np.linalg.solve(ata, a.T)
+    """(A'A)^-1 A' of 6 x 5 matrices (..., 6, 5): with the listing's INVERSE (one matrix),
+    or by LU with pivoting."""
+    at = np.swapaxes(a, -1, -2)
+    ata = at @ a
+    return printed_inverse(ata) @ at if printed else np.linalg.solve(ata, at)
 
 
-def loop_operators(theta1: float, q: np.ndarray, c: Constants) -> tuple[DualMatrix, DualMatrix]:
-    """H_j = G_j Q_j G_j' for q = (theta2, eta2, theta3, eta3, s4), stacked (5, 3, 3), and the
-    loop product B = M1 L2 L3 M4: d B / d q_j = H_j B (eqs. 2.18-2.24; Rahman 1991 eqs. 11-18)."""
-    m1, l2 = _m1(theta1, c), _l2(q[0], q[1], c)
-    zero = np.zeros((3, 3))
-    c3, s3, ce, se = np.cos(q[2]), np.sin(q[2]), np.cos(q[3]), np.sin(q[3])
-    l3 = DualMatrix(np.array([[c3 * ce, c3 * se, s3], [s3 * ce, s3 * se, -c3], [-se, ce, 0.0]]), zero)
+def loop_operators(theta1, q: np.ndarray, c: Constants) -> tuple[DualMatrix, DualMatrix]:
+    """H_j = G_j Q_j G_j' for q (..., 5) = (theta2, eta2, theta3, eta3, s4), stacked
+    (5, ..., 3, 3), and the loop product B = M1 L2 L3 M4: d B / d q_j = H_j B (eqs.
+    2.18-2.24; Rahman 1991 eqs. 11-18).  theta1 and the fields of c broadcast with q[..., 0]."""
+    q = np.asarray(q, dtype=float)
+    m1, l2 = _m1(theta1, c), _l2(q[..., 0], q[..., 1], c)
     m1l2 = m1 @ l2
-    h5 = m1l2 @ l3
-    carry = DualMatrix(np.stack([m1.real, m1.real, m1l2.real, m1l2.real, h5.real]),
-                       np.stack([m1.dual, m1.dual, m1l2.dual, m1l2.dual, h5.dual]))
-    operators = DualMatrix(np.stack([_ROT_OPERATOR, _about_axis(q[0]), _ROT_OPERATOR, _about_axis(q[2]), zero]),
-                           np.stack([zero, zero, zero, zero, _ROT_OPERATOR]))     # theta2 eta2 theta3 eta3 s4
-    return carry @ operators @ carry.T, h5 @ _m4(q[4], c)
+    l3 = _l3_real(q[..., 2], q[..., 3])
+    h5 = m1l2 @ DualMatrix(l3, np.zeros_like(l3))
+    shape = h5.real.shape
+    zero, rot = np.zeros(shape), np.broadcast_to(_ROT_OPERATOR, shape)
+    parts = [np.broadcast_to(x, shape) for x in (m1.real, m1l2.real, h5.real, m1.dual, m1l2.dual, h5.dual)]
+    carry = DualMatrix(np.stack([parts[0], parts[0], parts[1], parts[1], parts[2]]),
+                       np.stack([parts[3], parts[3], parts[4], parts[4], parts[5]]))
+    eta_ops = [np.broadcast_to(_about_axis(q[..., k]), shape) for k in (0, 2)]
+    operators = DualMatrix(np.stack([rot, eta_ops[0], rot, eta_ops[1], zero]),
+                           np.stack([zero, zero, zero, zero, rot]))     # theta2 eta2 theta3 eta3 s4
+    return carry @ operators @ carry.T, h5 @ _m4(q[..., 4], c)
 
 
-def newton_step(theta1: float, q: np.ndarray, c: Constants, printed: bool = True) -> np.ndarray:
-    """One printed step: DELTA = (A'A)^-1 A' V at q = (theta2, eta2, theta3, eta3, s4).
+def newton_step(theta1, q: np.ndarray, c: Constants, printed: bool = True) -> np.ndarray:
+    """One printed step: DELTA = (A'A)^-1 A' V at q (..., 5) = (theta2, eta2, theta3, eta3, s4).
 
     Column j of A holds elements (1,2), (1,3), (2,3) of the real and dual parts of
     H_j = G_j Q_j G_j': the derivative operator Q_j of joint j carried to frame {1}.
     """
     h, b = loop_operators(theta1, q, c)
     rows, cols = (0, 0, 1), (1, 2, 2)
-    a = np.concatenate([h.real[:, rows, cols], h.dual[:, rows, cols]], axis=1).T   # 6 x 5
+    a = np.moveaxis(np.concatenate([h.real[..., rows, cols], h.dual[..., rows, cols]], axis=-1), 0, -1)
     br, bd = b.real, b.dual
-    v = np.array([br[1, 0] + br[0, 0] + br[1, 1] - 2.0, br[2, 0] + br[0, 0] + br[2, 2] - 2.0,
-                  br[2, 1] + br[1, 1] + br[2, 2] - 2.0, bd[1, 0], bd[2, 0], bd[2, 1]])
-    return pseudo_inverse(a, printed) @ v
+    v = np.stack([br[..., 1, 0] + br[..., 0, 0] + br[..., 1, 1] - 2.0,
+                  br[..., 2, 0] + br[..., 0, 0] + br[..., 2, 2] - 2.0,
+                  br[..., 2, 1] + br[..., 1, 1] + br[..., 2, 2] - 2.0, bd[..., 1, 0], bd[..., 2, 0], bd[..., 2, 1]],
+                 axis=-1)
+    return (pseudo_inverse(a, printed) @ v[..., None])[..., 0]
 
 
 @dataclass

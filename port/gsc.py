@@ -48,8 +48,8 @@ def printed_rates(q, inputs: GscInputs, theta1, sine_denominators: bool):
     return np.stack(v, axis=1)[:, order], np.stack(a, axis=1)[:, order]
 
 
-def _five_variable(inputs: GscInputs, th: np.ndarray, quirks: GscQuirks):
-    run = gsc_position.positions(inputs, th)
+def _five_variable(inputs: GscInputs, th: np.ndarray, quirks: GscQuirks, run=None):
+    run = run if run is not None else gsc_position.positions(inputs, th)
     ok = run.converged
     forces = {name: np.full(th.size, np.nan) for name in gsc_forces.COMPONENTS}
     if np.any(ok):
@@ -92,13 +92,14 @@ def _closed_loop(inputs: GscInputs, th: np.ndarray):
 
 
 def analyse(inputs: GscInputs = GscInputs(), crank_deg=CRANK_DEG, quirks: GscQuirks = GSC_PRINTED,
-            strict: bool = False) -> pd.DataFrame:
+            strict: bool = False, positions=None) -> pd.DataFrame:
     """One configuration over crank angles (deg, in sweep order).  ``strict``: raise the typed
     error of the first failed angle (AssemblyError, ConvergenceError, SingularPositionError)
-    instead of returning non-converged rows."""
+    instead of returning non-converged rows.  ``positions``: a ``gsc_position.PositionRun``
+    already solved for these angles (the printed model only)."""
     th = np.radians(np.asarray(crank_deg, dtype=float))
     if quirks.five_variable_loop:
-        q, status, closure, forces = _five_variable(inputs, th, quirks)
+        q, status, closure, forces = _five_variable(inputs, th, quirks, positions)
     else:
         q, status, closure, forces = _closed_loop(inputs, th)
     converged = np.isin(status, [gsc_position.NEWTON, gsc_position.DFP_THEN_NEWTON, "closed", DEAD_CENTRE])
@@ -128,7 +129,11 @@ def _raise_first(status: np.ndarray, deg: np.ndarray) -> None:
 
 def sweep(quirks: GscQuirks = GSC_PRINTED, a4=GRID_A4, alpha4_deg=GRID_ALPHA4, s1=GRID_S1,
           crank_deg=CRANK_DEG) -> pd.DataFrame:
-    """Every grid point of section 3.1 (a4 x alpha4 x S1), each over the crank angles."""
-    frames = [analyse(GscInputs(a4=x, alpha4_deg=y, s1=z), crank_deg, quirks)
-              for x, y, z in itertools.product(a4, alpha4_deg, s1)]
+    """Every grid point of section 3.1 (a4 x alpha4 x S1), each over the crank angles; the
+    printed model's positions are solved for all grid points together."""
+    configs = [GscInputs(a4=x, alpha4_deg=y, s1=z) for x, y, z in itertools.product(a4, alpha4_deg, s1)]
+    runs = [None] * len(configs)
+    if quirks.five_variable_loop:
+        runs = gsc_position.positions_batch(configs, np.radians(np.asarray(crank_deg, dtype=float)))
+    frames = [analyse(inputs, crank_deg, quirks, positions=run) for inputs, run in zip(configs, runs)]
     return pd.concat(frames, ignore_index=True)

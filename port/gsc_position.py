@@ -5,9 +5,10 @@ The printed method: Newton-Raphson on the dual-number loop closure M1 L2 L3 M4 =
 step Delta = (A'A)^-1 A' V.  The 1996 program by the same author runs exactly this
 iteration; its port (``cssp_listing.newton_step``, equal to the legacy build to 1e-14) is
 reused here with the 1996 program's stopping rule (every |Delta| <= 1e-7, at most 150
-steps), since the 1991 thesis gives none.  When Newton fails, Hall, Root and Sandgren's
-fallback (section 2.6.1) minimises the loop-closure error ||B - I||^2 by
-Davidon-Fletcher-Powell from the last good position and hands the result back to Newton.
+steps), since the 1991 thesis gives none.  When Newton fails at a position that follows a
+converged one, Hall, Root and Sandgren's fallback (section 2.6.1) minimises the loop-closure
+error ||B - I||^2 by Davidon-Fletcher-Powell from that answer and hands the result back to
+Newton.
 
 Units: inch and radian.  Positions run in order, each starting from the previous answer
 (the first from the plane-geometry estimate of section 2.6.2).  Nothing here raises for a
@@ -15,8 +16,10 @@ single bad position: each gets a status, so that one sweep reports where and why
 """
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass, replace
+from types import SimpleNamespace
 
 import numpy as np
 
@@ -47,9 +50,13 @@ class PositionRun:
 
 def constants(inputs: GscInputs, s1: float) -> Constants:
     """The 1996 port's constants for this geometry (its mass data are not used here)."""
-    return replace(Constants.of(CsspInputs(a1=inputs.a1, a2=inputs.a2, a4=inputs.a4,
-                                           alpha4_deg=inputs.alpha4_deg, s1=1.0, rpm=inputs.rpm),
-                                False), s1=float(s1))
+    return replace(_geometry_constants(inputs.a1, inputs.a2, inputs.a4, inputs.alpha4_deg, inputs.rpm),
+                   s1=float(s1))
+
+
+@functools.lru_cache(maxsize=256)
+def _geometry_constants(a1: float, a2: float, a4: float, alpha4_deg: float, rpm: float) -> Constants:
+    return Constants.of(CsspInputs(a1=a1, a2=a2, a4=a4, alpha4_deg=alpha4_deg, s1=1.0, rpm=rpm), False)
 
 
 def assembles(inputs: GscInputs, theta1, s1) -> np.ndarray:
@@ -114,28 +121,81 @@ def dfp(theta1: float, q: np.ndarray, c: Constants) -> np.ndarray:
     return q
 
 
-def positions(inputs: GscInputs, theta1, use_dfp: bool = True) -> PositionRun:
-    """Solve every crank angle theta1 (rad, in sweep order) by the printed method."""
+def _batch_constants(inputs: list[GscInputs], s1: np.ndarray) -> SimpleNamespace:
+    """The fields newton_step reads, one value per configuration (arrays (B,))."""
+    field = lambda f: np.array([f(x) for x in inputs], dtype=float)
+    return SimpleNamespace(a1=field(lambda x: x.a1), a2=field(lambda x: x.a2), a4=field(lambda x: x.a4),
+                           alpha4=field(lambda x: x.alpha4), s1=np.asarray(s1, dtype=float))
+
+
+def _subset(c: SimpleNamespace, rows: np.ndarray) -> SimpleNamespace:
+    return SimpleNamespace(**{k: v[rows] for k, v in vars(c).items()})
+
+
+def _batch_step(theta1: float, q: np.ndarray, c: SimpleNamespace) -> np.ndarray:
+    """newton_step for many configurations at once; NaN rows where A'A is singular."""
+    try:
+        return newton_step(theta1, q, c, printed=False)
+    except np.linalg.LinAlgError:
+        out = np.full(q.shape, np.nan)
+        for k in range(q.shape[0]):
+            try:
+                out[k] = newton_step(theta1, q[k], _subset(c, np.array([k])), printed=False)[0]
+            except np.linalg.LinAlgError:
+                pass
+        return out
+
+
+def positions_batch(inputs: list[GscInputs], theta1, use_dfp: bool = True,
+                    stop_at_failure: bool = False) -> list[PositionRun]:
+    """Solve every crank angle theta1 (rad, in sweep order) by the printed method, for several
+    configurations at once (the Newton steps of all of them in one array operation).
+
+    A failed angle leaves the next one to start from the last answer, or
+    (``stop_at_failure``) ends that configuration's sweep, as the thesis's program stops."""
     th = np.asarray(theta1, dtype=float)
-    s1 = inputs.axial(th)[0]
-    n = th.size
-    out, status = np.full((n, 5), np.nan), np.full(n, NOT_CONVERGED, dtype=object)
-    closure, steps = np.full(n, np.nan), np.zeros(n, dtype=int)
-    ok = assembles(inputs, th, s1)
-    base = constants(inputs, s1[0])
-    guess = initial_estimate(base, real4=False)
-    for i in range(n):
-        if not ok[i]:
-            status[i] = CANNOT_ASSEMBLE
-            continue
-        c = base if s1[i] == base.s1 else replace(base, s1=float(s1[i]))
-        q, done, steps[i] = newton(th[i], guess, c)
-        if done:
-            status[i] = NEWTON
-        elif use_dfp and np.all(np.isfinite(guess)):
-            q, done, steps[i] = newton(th[i], dfp(th[i], guess, c), c)
-            status[i] = DFP_THEN_NEWTON if done else NOT_CONVERGED
-        if done:
-            out[i], guess = q, q
-            closure[i] = np.linalg.norm(residual(th[i], q, c)[0])
-    return PositionRun(out, status, closure, steps)
+    nb, n = len(inputs), th.size
+    s1 = np.stack([x.axial(th)[0] for x in inputs])                     # (B, n)
+    ok = np.stack([assembles(x, th, s) for x, s in zip(inputs, s1)])
+    q_out, closure = np.full((nb, n, 5), np.nan), np.full((nb, n), np.nan)
+    status, steps = np.full((nb, n), NOT_CONVERGED, dtype=object), np.zeros((nb, n), dtype=int)
+    status[~ok] = CANNOT_ASSEMBLE
+    guess = np.stack([initial_estimate(constants(x, s[0]), real4=False) for x, s in zip(inputs, s1)])
+    alive = np.ones(nb, dtype=bool)
+    with np.errstate(all="ignore"):
+        for i in range(n):
+            c = _batch_constants(inputs, s1[:, i])
+            todo = ok[:, i] & alive & np.all(np.isfinite(guess), axis=1)
+            q, done, failed = guess.copy(), np.zeros(nb, dtype=bool), ~todo
+            for step in range(1, MAX_ITERATIONS + 1):
+                act = np.flatnonzero(~done & ~failed)
+                if act.size == 0:
+                    break
+                delta = _batch_step(th[i], q[act], _subset(c, act))
+                bad = ~np.all(np.isfinite(delta), axis=1)
+                small = ~bad & np.all(np.abs(delta) <= NEWTON_TOL, axis=1)
+                failed[act[bad]] = True
+                done[act[small]] = True
+                steps[act[small], i] = step
+                move = act[~bad & ~small]
+                q[move] = q[move] + delta[~bad & ~small]
+            status[done, i] = NEWTON
+            retry = np.flatnonzero(todo & ~done) if use_dfp else np.array([], dtype=int)
+            for k in retry:
+                if i > 0 and status[k, i - 1] == NOT_CONVERGED:
+                    continue                                   # DFP only after a converged position
+                ck = constants(inputs[k], s1[k, i])
+                qk, ok_k, steps[k, i] = newton(th[i], dfp(th[i], guess[k], ck), ck)
+                if ok_k:
+                    q[k], done[k], status[k, i] = qk, True, DFP_THEN_NEWTON
+            for k in np.flatnonzero(done):
+                q_out[k, i], guess[k] = q[k], q[k]
+                closure[k, i] = np.linalg.norm(residual(th[i], q[k], constants(inputs[k], s1[k, i]))[0])
+            if stop_at_failure:
+                alive &= done | ~ok[:, i]
+    return [PositionRun(q_out[k], status[k], closure[k], steps[k]) for k in range(nb)]
+
+
+def positions(inputs: GscInputs, theta1, use_dfp: bool = True, stop_at_failure: bool = False) -> PositionRun:
+    """One configuration's sweep (``positions_batch`` of one)."""
+    return positions_batch([inputs], theta1, use_dfp, stop_at_failure)[0]

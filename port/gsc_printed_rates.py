@@ -19,8 +19,9 @@ Each formula is evaluated the way it is printed: same terms, same grouping, left
 products, no simplification, because the port measures their round-off. This is the printed
 formulation. Its denominators s(theta3) (in (39), (40), (43)) and s(theta2) s(theta3) (in (41),
 (42)) vanish, and the accelerations divide by their squares. So everything blows up as
-theta2 -> 0 (thesis, section 3.2). The functions never guard a division: numpy gives
-inf/nan (with a warning) and mpmath raises ZeroDivisionError.
+theta2 -> 0 (thesis, section 3.2). The functions never guard a division. With numpy a
+near-zero sine gives huge values, and an exact zero gives inf/nan with a RuntimeWarning.
+With mpmath an exact zero raises ZeroDivisionError.
 
 The code is generic over the arithmetic. ``m`` supplies ``sin`` and ``cos``: ``m=numpy``
 (the default; the arguments can be arrays that broadcast) or ``m=mpmath`` (the arguments
@@ -31,24 +32,25 @@ numerator bracket. The terms these replace are the time derivatives of the S1' t
 (39)-(43), and the quotient rule needs S1'' there. Each line that restores a dot has a
 comment giving the seed line. Apart from these, the printed text is kept.
 
-Errors of the author are kept as printed and listed in PRINTED_ERRORS.
+Errors of the author are kept as printed and listed in PRINTED_ERRORS: a missing c^2(eta2)
+in (39), and joint twists (30), (31) put in the wrong frame. Because of these, (39), (41) and
+(42) are exact only in planar motion (eta2 = eta3 = 0).
 """
 from __future__ import annotations
 
 import numpy as np
 
-#: Departures of the printed formulas from the thesis's own linear system (37a)-(37f)/(38),
-#: or from an exact time derivative, that a lost dot cannot explain. They are implemented
-#: as printed.
+#: Errors of the author (not OCR) that touch these formulas. The formulas are kept as printed.
 PRINTED_ERRORS = [
-    "(39) theta2' (seed l. 565): the first a1 term is 'theta1' s(theta2) c(theta3)'; "
-    "rows (37a), (37d), (37e) give 'theta1' s(theta2) c(theta3) c^2(eta2)'. The printed "
-    "(39) is off by -a1 theta1' s(theta2) c(theta3) s^2(eta2) / (a2 s(theta3)), so it "
-    "breaks (37a), (37d) and (37e) whenever eta2 != 0. (38a) is the exact derivative of "
-    "the printed (39), so the author used this form (it is not an OCR loss).",
-    "(38) row 6 (seed l. 561): the right-hand side is printed '-theta1' a1 s(theta2) - "
-    "S1' c(eta2)'; (37f) gives '-theta1' a1 s(theta2) s(eta2) - S1' c(eta2)'. (39)-(43) "
-    "do not use row 6.",
+    "(39) theta2', seed l. 565: the term a1 theta1' s(theta2) c(theta3) lacks a factor "
+    "c^2(eta2), so (39) breaks (37a), (37d) and (37e) by a1 theta1' s(theta2) c(theta3) "
+    "s^2(eta2) / (a2 s(theta3)) when eta2 != 0. (38a) differentiates the printed form.",
+    "(38) row 6, seed l. 561: the right-hand side is printed -theta1' a1 s(theta2) - S1' c(eta2); "
+    "(37f) gives -theta1' a1 s(theta2) s(eta2) - S1' c(eta2). (39)-(43) do not use row 6.",
+    "(30), (31), seed l. 503, 507: the joint twists are printed as (0, eta', theta'). For "
+    "Z(theta) Y(eta) the twist in frames {2}, {3} is (-eta' s(theta), eta' c(theta), theta'). "
+    "So (37) and (39), (41), (42) are wrong when eta2' != 0. On a closed spatial trajectory "
+    "of loop (1)-(5), (40) and (43) still give the exact theta3' and S4'.",
 ]
 
 
