@@ -55,8 +55,9 @@ def _planar_gap(frame: pd.DataFrame) -> float:
     S1 = 0), relative to each column's largest reference value; positions within 1.5 deg of a
     dead centre (where a constant torque cannot be balanced) left out."""
     worst = 0.0
-    for a4 in gsc.GRID_A4:
-        rows = _ok(frame[(frame.a4 == a4) & (frame.alpha4_deg == 270.0) & (frame.s1 == 0.0)])
+    planar = _ok(frame[(frame.alpha4_deg == 270.0) & (frame.s1 == 0.0)])
+    for a4 in planar.a4.unique():
+        rows = planar[planar.a4 == a4]
         ref = planar_reference.analyse(rows.crank_deg.to_numpy(), a4=a4, torque=-GscInputs().torque)
         expected = planar_reference.in_thesis_frames(ref)
         away = np.abs(np.sin(ref["th_rod"] - ref["theta1"])) > np.sin(np.radians(1.5)) * 0.2

@@ -6,6 +6,7 @@ import pytest
 
 from linkrepro.port import Quirks
 from linkrepro.port.cssp_quirks import CsspQuirks
+from linkrepro.port.gsc_quirks import GscQuirks
 
 TAG = re.compile(r"!\s*(D\d{3})\s*$")
 PROGRAMS = ["ali1977_case1_source.f", "ali1977_case1_cognate.f", "ali1977_case2_source.f",
@@ -52,7 +53,7 @@ def test_every_tag_in_src_is_registered(root, register):
 
 def test_every_quirk_has_one_register_entry_and_back(register):
     quirks_in_register = [e.quirk for e in register.values() if e.quirk]
-    assert sorted(quirks_in_register) == sorted(Quirks.names() + CsspQuirks.names())
+    assert sorted(quirks_in_register) == sorted(Quirks.names() + CsspQuirks.names() + GscQuirks.names())
     for entry in register.values():
         if entry.quirk:
             assert entry.kind == "original-bug", f"{entry.id}: a quirk models a bug of the original"
