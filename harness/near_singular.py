@@ -26,7 +26,6 @@ import pandas as pd
 
 from ..port import gsc, gsc_position, gsc_printed_rates
 from ..port.gsc import ball_angles
-from ..port.cssp_data import CsspInputs
 from ..port.cssp_mechanics import kinematics
 from ..port.gsc_data import GscInputs
 
@@ -101,8 +100,6 @@ def table() -> pd.DataFrame:
     for inputs in CONFIGS:
         w, a1 = inputs.omega, inputs.a1
         scales = [w, w, a1 * w, w * w, w * w, a1 * w * w]
-        geom = CsspInputs(a1=inputs.a1, a2=inputs.a2, a4=inputs.a4, alpha4_deg=inputs.alpha4_deg,
-                          s1=inputs.s1, rpm=inputs.rpm)
         for star, q_star in crossings(inputs):
             for delta in OFFSETS_DEG:
                 theta1 = star + np.radians(delta)
@@ -110,7 +107,7 @@ def table() -> pd.DataFrame:
                 with np.errstate(all="ignore"):
                     printed = _printed_rates(q, inputs, np)
                 printed_mp = _printed_rates(q, inputs, mpmath)
-                kin = kinematics(geom, np.array([theta1]))
+                kin = kinematics(inputs, np.array([theta1]))
                 exact = [kin.theta2[0], kin.eta2[0], *(v[0] for v in ball_angles(kin)), kin.s4[0]]
                 with np.errstate(all="ignore"):
                     printed_exact = _printed_rates(exact, inputs, np)

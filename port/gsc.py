@@ -18,7 +18,6 @@ import pandas as pd
 
 from ..errors import AssemblyError, ConvergenceError, SingularPositionError
 from . import gsc_forces, gsc_position, gsc_printed_rates, gsc_rates
-from .cssp_data import CsspInputs
 from .cssp_mechanics import kinematics
 from .gsc_data import GscInputs
 from .gsc_quirks import GSC_PRINTED, GscQuirks
@@ -76,9 +75,7 @@ def _closed_loop(inputs: GscInputs, th: np.ndarray):
     forces = {name: np.full(n, np.nan) for name in gsc_forces.COMPONENTS}
     ok = gsc_position.assembles(inputs, th, inputs.axial(th)[0])
     if np.any(ok):
-        geom = CsspInputs(a1=inputs.a1, a2=inputs.a2, a4=inputs.a4, alpha4_deg=inputs.alpha4_deg,
-                          s1=inputs.s1, rpm=inputs.rpm)
-        kin = kinematics(geom, th[ok], np.stack(inputs.axial(th[ok])))
+        kin = kinematics(inputs, th[ok], np.stack(inputs.axial(th[ok])))
         theta3, eta3 = ball_angles(kin)
         q[ok] = np.stack([kin.theta2, kin.eta2, theta3, eta3, kin.s4], axis=1)
         closure[ok] = 0.0

@@ -15,16 +15,19 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .cssp_data import CsspInputs
+
 #: g (in/s^2), the example's weight density (lbf/in^3, "specific gravity d = 0.28")
 GRAVITY = 386.4
 DENSITY = 0.28
 
 
 @dataclass(frozen=True)
-class GscInputs:
+class GscInputs(CsspInputs):
     """One configuration of section 3.1: lengths and offsets (in), twist (deg), crank speed
     (rpm), constant input torque T1k (lbf*in), section radii r1, r2 and slider side r3 (in),
-    axial-motion ratio alpha of eq. (27) (0: S1 constant)."""
+    axial-motion ratio alpha of eq. (27) (0: S1 constant).  The 1996 program's inputs
+    (``CsspInputs``) with the 1991 example's values and the 1991 additions."""
     a1: float = 12.0
     a2: float = 50.0
     a4: float = 0.0
@@ -38,23 +41,13 @@ class GscInputs:
     alpha: float = 0.0
 
     def __post_init__(self):
-        for name in ("a1", "a2", "rpm", "r1", "r2", "r3"):
-            value = getattr(self, name)
-            if not (isinstance(value, (int, float)) and math.isfinite(value) and value > 0):
-                raise ValueError(f"{name} must be a positive finite number, got {value!r}")
-        for name in ("a4", "alpha4_deg", "s1", "torque", "alpha"):
-            value = getattr(self, name)
-            if not (isinstance(value, (int, float)) and math.isfinite(value)):
-                raise ValueError(f"{name} must be a finite number, got {value!r}")
-
-    @property
-    def omega(self) -> float:
-        """Crank speed theta1' (rad/s)."""
-        return self.rpm * 2.0 * math.pi / 60.0
-
-    @property
-    def alpha4(self) -> float:
-        return math.radians(self.alpha4_deg)
+        super().__post_init__()
+        for name in ("r1", "r2", "r3"):
+            if not (math.isfinite(getattr(self, name)) and getattr(self, name) > 0):
+                raise ValueError(f"{name} must be positive and finite, got {getattr(self, name)!r}")
+        for name in ("torque", "alpha"):
+            if not math.isfinite(getattr(self, name)):
+                raise ValueError(f"{name} must be finite, got {getattr(self, name)!r}")
 
     def axial(self, theta1) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """S1, S1', S1'' (in, in/s, in/s^2) at crank angles theta1 (rad): eqs. (28), (28a),

@@ -107,7 +107,7 @@ def corrected_forces(inputs: GscInputs, kin, strict: bool = True) -> dict:
     raises SingularPositionError (``strict``) or returns inf/NaN there.
     """
     mass = MassModel.of(inputs, com_beyond_joint=False)
-    (m1, m2, m3), (kx2, kt2) = mass.m, (mass.k2[1][0], mass.k2[1][1])
+    (m1, m2, m3), kt2 = mass.m, mass.k2[1][1]
     P, Q, u, a_p, a_q, u_dd = kin.P, kin.Q, kin.u, kin.Pdd, kin.Qdd, kin.udd
     g1 = np.stack([P[:, 0] / 2.0, P[:, 1] / 2.0, P[:, 2]], axis=1)       # crank centre of mass
     a_g1 = np.stack([a_p[:, 0] / 2.0, a_p[:, 1] / 2.0, a_p[:, 2]], axis=1)
