@@ -67,6 +67,7 @@ def run_bench(repeat: int = 20) -> str:
         lines.append(f"| {step:g} | {n} | {t_leg:.5f} | {t_port:.5f} | {t_port / t_leg:.2f} | {rel:.1e} | {drift:.2g} |")
     lines += case3_sweep(repeat)
     lines += cssp_bench(repeat)
+    lines += gsc_bench(repeat)
     return "\n".join(lines) + "\n"
 
 
@@ -118,6 +119,40 @@ def cssp_bench(repeat: int) -> list[str]:
         seconds = _best(lambda: cycle(count), max(1, repeat // 10))
         g, x = cycle(count)
         lines.append(f"| {count} | {seconds:.4f} | {abs(g - g_ref) / g_ref:.1e} | {np.max(np.abs(x - x_ref) / x_ref):.1e} |")
+    return lines
+
+
+def gsc_bench(repeat: int) -> list[str]:
+    """Rahman 1991: one configuration, 0..360 step 1, each engine; error against the
+    complex-number analysis (planar) and against the exact closed loop (spatial)."""
+    from ..port import gsc
+    from ..port.gsc_data import GscInputs
+    from ..port.gsc_quirks import GSC_CORRECTED, GSC_PRINTED
+    from .planar_reference import analyse, in_thesis_frames
+    lines = ["", "## rahman1991: one configuration, 361 crank angles, each engine", "",
+             "Error: planar (a4 = 10) against the complex-number analysis, largest |difference| over the "
+             "largest value of s4 and the forces (>= 2 deg from the dead centres); spatial (a4 = 30, S1 = 3.5) "
+             "S4 against the exact closed loop (in).", "",
+             "| configuration | engine | seconds | error |", "|---|---|---|---|"]
+    fixed = GSC_PRINTED.without("com_beyond_joint", "joint_force_signs")
+    engines = {"printed": GSC_PRINTED, "printed, sign bugs fixed": fixed, "corrected": GSC_CORRECTED}
+    exact = gsc.analyse(GscInputs(a4=30.0, s1=3.5), quirks=GSC_CORRECTED).s4.to_numpy()
+    ref = analyse(gsc.CRANK_DEG, a4=10.0, torque=-GscInputs().torque)
+    away = np.abs(np.sin(ref["th_rod"] - ref["theta1"])) > 0.2 * np.sin(np.radians(2.0))
+    for name, quirks in engines.items():
+        for label, inputs in (("planar a4 = 10", GscInputs(a4=10.0)), ("spatial a4 = 30, S1 = 3.5", GscInputs(a4=30.0, s1=3.5))):
+            runs = max(1, repeat // 10) if quirks.five_variable_loop else repeat
+            seconds = _best(lambda: gsc.analyse(inputs, quirks=quirks), runs)
+            frame = gsc.analyse(inputs, quirks=quirks)
+            if inputs.s1 != 0.0 and not quirks.five_variable_loop:
+                lines.append(f"| {label} | {name} | {seconds:.4f} | (the reference) |")
+                continue
+            if inputs.s1 == 0.0:
+                error = max(float(np.nanmax(np.abs(frame[k].to_numpy() - v)[away]) / np.max(np.abs(v[away])))
+                            for k, v in in_thesis_frames(ref).items())
+            else:
+                error = float(np.nanmax(np.abs(frame.s4.to_numpy() - exact)))
+            lines.append(f"| {label} | {name} | {seconds:.4f} | {error:.3g} |")
     return lines
 
 

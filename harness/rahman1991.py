@@ -155,17 +155,37 @@ def convergence_limits(study: pd.DataFrame) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
-def legacy_on_grid() -> pd.DataFrame:
-    """The 1996 legacy build (10-deg steps) on each grid point: runs or fails, and where."""
+def legacy_on_grid(printed: pd.DataFrame) -> pd.DataFrame:
+    """The 1996 legacy build on each grid point (its Newton is the 1991 method: 10-deg steps,
+    REAL*4, the listing's INVERSE): runs or fails, and where.  Its positions are not returned
+    by the build; the port's replica of that Newton (``cssp_listing``, equal to legacy to 1e-14
+    where both run) gives them, diffed against the 1991 port's positions (1-deg steps, float64)
+    at the angles both solved: largest |S4 difference| (in) and |theta2 difference| (deg)."""
     from ..legacy import rahman1996
+    from ..port.cssp_data import Constants
+    from ..port.cssp_listing import initial_estimate, newton_positions
     rows = []
     for a4, al, s1 in itertools.product(gsc.GRID_A4, gsc.GRID_ALPHA4, gsc.GRID_S1):
+        inputs = GscInputs(a4=a4, alpha4_deg=al, s1=s1)
+        row = dict(a4=a4, alpha4_deg=al, s1=s1, legacy="converged", legacy_fail_deg=np.nan,
+                   replica="converged", replica_fail_deg=np.nan, max_ds4_in=np.nan, max_dtheta2_deg=np.nan)
         try:
-            rahman1996.cssp(a1=12.0, a2=50.0, a4=a4, alpha4_deg=al, s1=s1, rpm=50.0)
-            status, where = "converged", np.nan
+            rahman1996.cssp(a1=inputs.a1, a2=inputs.a2, a4=a4, alpha4_deg=al, s1=s1, rpm=inputs.rpm)
         except LinkageError as exc:
-            status, where = type(exc).__name__, exc.angle_deg
-        rows.append(dict(a4=a4, alpha4_deg=al, s1=s1, legacy=status, legacy_fail_deg=where))
+            row.update(legacy=type(exc).__name__, legacy_fail_deg=exc.angle_deg)
+        c = Constants.of(inputs, real4=True)
+        try:
+            q = newton_positions(gsc.CRANK_DEG[::10] * (c.pi / 180.0), initial_estimate(c, True), c, True).q
+        except LinkageError as exc:
+            row.update(replica=type(exc).__name__, replica_fail_deg=exc.angle_deg)
+        else:
+            ours = printed[(printed.a4 == a4) & (printed.alpha4_deg == al) & (printed.s1 == s1)].iloc[::10]
+            both = ours.converged.to_numpy()
+            if both.any():
+                dtheta = np.degrees(np.mod(q[:, 0], 2 * np.pi)) - ours.theta2.to_numpy()
+                row.update(max_ds4_in=float(np.max(np.abs(q[both, 4] - ours.s4.to_numpy()[both]))),
+                           max_dtheta2_deg=float(np.max(np.abs((dtheta[both] + 180.0) % 360.0 - 180.0))))
+        rows.append(row)
     return pd.DataFrame(rows)
 
 
@@ -190,7 +210,7 @@ def run(out_dir: Path) -> dict:
     claims.to_csv(target / "claims.csv", index=False, float_format="%.6g")
     singular = near_singular.table()
     singular.to_csv(target / "near_singular.csv", index=False, float_format="%.6g")
-    legacy = legacy_on_grid()
+    legacy = legacy_on_grid(frames["port_printed"])
     legacy.to_csv(target / "legacy.csv", index=False)
     plots = rahman1991_figures.plot_figures(frames, target)
     (target / "report.md").write_text(report(frames, claims, study, singular, legacy, plots, timings))
