@@ -226,7 +226,7 @@ def report(frames, claims, study, singular, legacy, plots, timings) -> str:
     lines = [f"# {NAME}", "", TITLE, "",
              "No numeric table is printed in the thesis; its statements are checked instead "
              "(`claims.csv`; the printed words in harness/published/rahman1991_claims.csv; "
-             "register D085-D092).", "", "## Claims of section 3.2", "",
+             "register D085-D094).", "", "## Claims of section 3.2", "",
              _md(claims), "", "## Convergence: does the mechanism assemble, does the solver converge", "",
              "Every configuration of the study assembles (a rod of 50 in reaches the slider axis at every crank "
              "angle); the failures are the solver's.", "",

@@ -93,7 +93,7 @@ def reproduce(names: list[str] | None, out_dir: Path) -> list[dict]:
         verdicts = example["claims"].groupby(["engine", "verdict"]).size().unstack(fill_value=0)
         lines += [f"## [{example['scene']}]({example['scene']}/report.md)", "", example["title"], "",
                   "No numeric table is printed; each claim of section 3.2, per engine "
-                  "(see the scene report and register D085-D092):", "",
+                  "(see the scene report and register D085-D094):", "",
                   "| engine | " + " | ".join(verdicts.columns) + " |", "|---|" + "---|" * len(verdicts.columns)]
         lines += [f"| {engine} | " + " | ".join(str(v) for v in row) + " |" for engine, row in verdicts.iterrows()]
         lines.append("")

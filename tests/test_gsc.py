@@ -209,3 +209,10 @@ def test_scene_csv_has_the_issue_columns_and_claims_table(tmp_path):
     assert verdict["planar_complex", "port_corrected"] == "reproduced"
     assert verdict["planar_complex", "port_printed"] == "contradicted"
     assert verdict["f2k_zero", "port_corrected"] == "contradicted"
+
+
+def test_a4_20_converges_from_alpha4_232_to_310_as_the_thesis_says(claims):
+    lo, hi = (float(v) for v in claims.loc["converge_alpha4", "value"].split())
+    configs = [GscInputs(a4=20.0, alpha4_deg=lo), GscInputs(a4=20.0, alpha4_deg=hi)]
+    runs = gsc_position.positions_batch(configs, np.radians(gsc.CRANK_DEG), stop_at_failure=True)
+    assert all(run.converged.all() for run in runs)
