@@ -67,6 +67,39 @@ def _planar_gap(frame: pd.DataFrame) -> float:
     return worst
 
 
+def _spikes(frame: pd.DataFrame, engine: str) -> dict:
+    """Where the largest |2F2i| of each a4-family curve (S1 = 3.5, alpha4 = 270) lies: its
+    distance (deg) to the nearest crank angle where theta2 passes 0 or 180 deg (dead centre)."""
+    worst, where = 0.0, []
+    for a4 in (10.0, 20.0, 30.0):
+        rows = _ok(frame[(frame.a4 == a4) & (frame.alpha4_deg == 270.0) & (frame.s1 == 3.5)])
+        if rows.empty:
+            continue
+        s2 = np.sin(np.radians(rows.theta2.to_numpy()))
+        dead = rows.crank_deg.to_numpy()[:-1][s2[:-1] * s2[1:] <= 0]
+        peak = float(rows.crank_deg.to_numpy()[np.argmax(np.abs(rows.F2i.to_numpy()))])
+        where.append(f"a4 = {a4:g}: {peak:g}")
+        if len(dead):
+            worst = max(worst, float(np.min(np.abs(dead - peak))))
+    return {"spikes": (worst, 2.0, "largest |2F2i| at crank deg (" + "; ".join(where) + "); value: its "
+                       "distance to the nearest theta2 = 0/180 (dead centre), deg")}
+
+
+def _iterations(frame: pd.DataFrame, engine: str, text: pd.DataFrame) -> dict:
+    """Newton steps per converged position (the last, small step counted), planar points."""
+    if engine != "port_printed":
+        return {}
+    lo, hi = (float(v) for v in text.loc["iterations", "value"].split())
+    ok = frame[frame.converged]
+    planar = ok[(ok.alpha4_deg == 270.0) & (ok.s1 == 0.0)].iterations
+    spatial = ok.drop(planar.index).iterations
+    median = float(planar.median())
+    return {"iterations": (0.0 if lo <= median <= hi else abs(median - hi), 0.0,
+                           f"median Newton steps per position: planar {median:g} (max {planar.max()}), "
+                           f"spatial {spatial.median():g} (max {spatial.max()}); value: distance of the "
+                           f"planar median from [{lo:g}, {hi:g}]")}
+
+
 def measure_claims(frames: dict[str, pd.DataFrame], limits: pd.DataFrame) -> pd.DataFrame:
     """claims.csv: each claim of rahman1991_claims.csv, each engine, measured and verdict."""
     text = claims_text().set_index("claim")
@@ -89,6 +122,7 @@ def measure_claims(frames: dict[str, pd.DataFrame], limits: pd.DataFrame) -> pd.
             "planar_complex": (_planar_gap(frame), 1e-6, "largest relative gap to the complex-number analysis "
                                                          "(s4, forces; >= 1.5 deg from dead centres)"),
         }
+        found.update(_spikes(frame, engine), **_iterations(frame, engine, text))
         for claim, (value, tol, what) in found.items():
             rows.append(dict(claim=claim, engine=engine, measured=float(value), tolerance=tol,
                              verdict="reproduced" if value <= tol else "contradicted", what=what))

@@ -6,7 +6,8 @@ configuration (a4 in, alpha4 deg, s1 in), crank_deg, converged, S4 (in), theta2,
 theta3, eta3 (deg; theta in [0, 360)), and the 18 joint-force components of
 ``gsc_forces.COMPONENTS`` (lbf, lbf*in, each in its thesis frame).  Diagnostics follow:
 status (``gsc_position`` statuses, or "dead centre" where a constant crank torque cannot be
-balanced) and closure (||M1 L2 L3 M4 - I|| at the answer).  Rows that did not converge hold
+balanced), closure (||M1 L2 L3 M4 - I|| at the answer) and iterations (Newton steps; 0 for
+the closed-form corrected model).  Rows that did not converge hold
 NaN (empty in CSV) after ``converged``.
 """
 from __future__ import annotations
@@ -59,7 +60,7 @@ def _five_variable(inputs: GscInputs, th: np.ndarray, quirks: GscQuirks, run=Non
                                             action_reaction=not quirks.joint_force_signs)
         for name in gsc_forces.COMPONENTS:
             forces[name][ok] = got[name]
-    return run.q, run.status.astype(str), run.closure, forces
+    return run.q, run.status.astype(str), run.closure, forces, run.iterations
 
 
 def ball_angles(kin) -> tuple[np.ndarray, np.ndarray]:
@@ -85,7 +86,7 @@ def _closed_loop(inputs: GscInputs, th: np.ndarray):
         status[ok] = np.where(dead, DEAD_CENTRE, "closed")
         for name in gsc_forces.COMPONENTS:
             forces[name][ok] = np.where(dead, np.nan, got[name])
-    return q, status.astype(str), closure, forces
+    return q, status.astype(str), closure, forces, np.zeros(n, dtype=int)
 
 
 def analyse(inputs: GscInputs = GscInputs(), crank_deg=CRANK_DEG, quirks: GscQuirks = GSC_PRINTED,
@@ -96,9 +97,9 @@ def analyse(inputs: GscInputs = GscInputs(), crank_deg=CRANK_DEG, quirks: GscQui
     already solved for these angles (the printed model only)."""
     th = np.radians(np.asarray(crank_deg, dtype=float))
     if quirks.five_variable_loop:
-        q, status, closure, forces = _five_variable(inputs, th, quirks, positions)
+        q, status, closure, forces, iterations = _five_variable(inputs, th, quirks, positions)
     else:
-        q, status, closure, forces = _closed_loop(inputs, th)
+        q, status, closure, forces, iterations = _closed_loop(inputs, th)
     converged = np.isin(status, [gsc_position.NEWTON, gsc_position.DFP_THEN_NEWTON, "closed", DEAD_CENTRE])
     if strict:
         _raise_first(status, np.degrees(th))
@@ -110,7 +111,7 @@ def analyse(inputs: GscInputs = GscInputs(), crank_deg=CRANK_DEG, quirks: GscQui
     for name in gsc_forces.COMPONENTS:
         frame[name] = forces[name]
     frame = frame[COLUMNS].copy()
-    frame["status"], frame["closure"] = status, closure
+    frame["status"], frame["closure"], frame["iterations"] = status, closure, iterations
     return frame
 
 
