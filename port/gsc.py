@@ -36,7 +36,7 @@ CRANK_DEG = np.arange(0.0, 361.0, 1.0)
 def printed_rates(q, inputs: GscInputs, theta1, sine_denominators: bool):
     """q', q'' (n, 5 each, q's order) of the five-variable loop: the printed closed forms or
     least squares (``gsc_rates``)."""
-    s1, s1_d, s1_dd = inputs.axial(theta1)
+    _, s1_d, s1_dd = inputs.axial(theta1)
     w = inputs.omega
     if not sine_denominators:
         return gsc_rates.rates(q, w, 0.0, s1_d, s1_dd, inputs.a1, inputs.a2)
