@@ -78,19 +78,10 @@ def residual(theta1: float, q: np.ndarray, c: Constants) -> tuple[np.ndarray, np
 
 
 def newton(theta1: float, q: np.ndarray, c: Constants) -> tuple[np.ndarray, bool, int]:
-    """The printed iteration from q: (answer, converged, steps).  Non-finite steps fail."""
-    for step in range(1, MAX_ITERATIONS + 1):
-        with np.errstate(all="ignore"):
-            try:
-                delta = newton_step(theta1, q, c, printed=False)
-            except np.linalg.LinAlgError:
-                return q, False, step
-        if not np.all(np.isfinite(delta)):
-            return q, False, step
-        if np.all(np.abs(delta) <= NEWTON_TOL):
-            return q, True, step
-        q = q + delta
-    return q, False, MAX_ITERATIONS
+    """The printed iteration from q (5,) for one configuration: (answer, converged, steps)."""
+    one = SimpleNamespace(**{k: np.array([getattr(c, k)], dtype=float) for k in ("a1", "a2", "a4", "alpha4", "s1")})
+    q, done, steps = newton_batch(theta1, np.asarray(q, dtype=float)[None, :], one)
+    return q[0], bool(done[0]), int(steps[0])
 
 
 def dfp(theta1: float, q: np.ndarray, c: Constants) -> np.ndarray:
@@ -146,6 +137,26 @@ def _batch_step(theta1: float, q: np.ndarray, c: SimpleNamespace) -> np.ndarray:
         return out
 
 
+def newton_batch(theta1: float, q: np.ndarray, c: SimpleNamespace) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The printed iteration for B configurations at once, q (B, 5), c's fields (B,): each
+    stops when every |Delta| <= NEWTON_TOL (converged) or at a non-finite step or after
+    MAX_ITERATIONS (failed).  Returns (answers, converged (B,), steps taken (B,))."""
+    q = q.copy()
+    nb = q.shape[0]
+    done, failed, steps = np.zeros(nb, dtype=bool), np.zeros(nb, dtype=bool), np.full(nb, MAX_ITERATIONS)
+    with np.errstate(all="ignore"):
+        for step in range(1, MAX_ITERATIONS + 1):
+            act = np.flatnonzero(~done & ~failed)
+            if act.size == 0:
+                break
+            delta = _batch_step(theta1, q[act], _subset(c, act))
+            bad = ~np.all(np.isfinite(delta), axis=1)
+            small = ~bad & np.all(np.abs(delta) <= NEWTON_TOL, axis=1)
+            failed[act[bad]], done[act[small]], steps[act[bad | small]] = True, True, step
+            q[act[~bad & ~small]] += delta[~bad & ~small]
+    return q, done, steps
+
+
 def positions_batch(inputs: list[GscInputs], theta1, use_dfp: bool = True,
                     stop_at_failure: bool = False) -> list[PositionRun]:
     """Solve every crank angle theta1 (rad, in sweep order) by the printed method, for several
@@ -166,19 +177,9 @@ def positions_batch(inputs: list[GscInputs], theta1, use_dfp: bool = True,
         for i in range(n):
             c = _batch_constants(inputs, s1[:, i])
             todo = ok[:, i] & alive & np.all(np.isfinite(guess), axis=1)
-            q, done, failed = guess.copy(), np.zeros(nb, dtype=bool), ~todo
-            for step in range(1, MAX_ITERATIONS + 1):
-                act = np.flatnonzero(~done & ~failed)
-                if act.size == 0:
-                    break
-                delta = _batch_step(th[i], q[act], _subset(c, act))
-                bad = ~np.all(np.isfinite(delta), axis=1)
-                small = ~bad & np.all(np.abs(delta) <= NEWTON_TOL, axis=1)
-                failed[act[bad]] = True
-                done[act[small]] = True
-                steps[act[small], i] = step
-                move = act[~bad & ~small]
-                q[move] = q[move] + delta[~bad & ~small]
+            q, done = guess.copy(), np.zeros(nb, dtype=bool)
+            rows = np.flatnonzero(todo)
+            q[rows], done[rows], steps[rows, i] = newton_batch(th[i], guess[rows], _subset(c, rows))
             status[done, i] = NEWTON
             retry = np.flatnonzero(todo & ~done) if use_dfp else np.array([], dtype=int)
             for k in retry:
