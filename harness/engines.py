@@ -20,13 +20,23 @@ ENGINES = ("printed", "legacy", "port_printed", "port_corrected")
 BIN_DIR = Path(__file__).resolve().parent.parent / "legacy" / "bin"
 
 
+def program_path(program: str) -> Path:
+    """Where a printed program is: installed beside the package (``legacy/bin``), or, in an
+    editable install (``pip install --no-build-isolation -e .``), in meson's build folder."""
+    exe = BIN_DIR / program
+    if not exe.exists():
+        built = sorted(BIN_DIR.parent.parent.glob(f"build/*/{program}"))
+        exe = built[0] if built else exe
+    return exe
+
+
 class PrintedProgramError(RuntimeError):
     """A printed program could not be run or its output could not be read."""
 
 
 def run_program(program: str, cwd: Path | None = None, timeout_s: float = 60.0) -> str:
     """Run one printed program (in ``cwd``, for programs that OPEN files); return its stdout."""
-    exe = BIN_DIR / program
+    exe = program_path(program)
     if not exe.exists():
         raise PrintedProgramError(f"printed program {program!r} is not built ({exe} missing); "
                                   "reinstall the package")

@@ -191,13 +191,14 @@ def convergence_limits(study: pd.DataFrame) -> pd.DataFrame:
 
 def legacy_on_grid(printed: pd.DataFrame) -> pd.DataFrame:
     """The 1996 legacy build on each grid point (its Newton is the 1991 method: 10-deg steps,
-    REAL*4, the listing's INVERSE): runs or fails, and where.  Its positions are not returned
-    by the build; the port's replica of that Newton (``cssp_listing``, equal to legacy to 1e-14
-    where both run) gives them, diffed against the 1991 port's positions (1-deg steps, float64)
-    at the angles both solved: largest |S4 difference| (in) and |theta2 difference| (deg)."""
+    REAL*4, the listing's INVERSE): runs or fails, and where.  The port's replica of its first
+    pass (``cssp_listing.listing_pass``, equal to the build's own positions bit for bit,
+    tests/test_differential_rahman.py) runs on where the build stops after a later failure;
+    its positions are diffed against the 1991 port's (1-deg steps, float64) at the angles
+    both solved: largest |S4 difference| (in) and |theta2 difference| (deg)."""
     from ..legacy import rahman1996
     from ..port.cssp_data import Constants
-    from ..port.cssp_listing import initial_estimate, newton_positions
+    from ..port.cssp_listing import initial_estimate, listing_pass
     rows = []
     for a4, al, s1 in itertools.product(gsc.GRID_A4, gsc.GRID_ALPHA4, gsc.GRID_S1):
         inputs = GscInputs(a4=a4, alpha4_deg=al, s1=s1)
@@ -209,7 +210,7 @@ def legacy_on_grid(printed: pd.DataFrame) -> pd.DataFrame:
             row.update(legacy=type(exc).__name__, legacy_fail_deg=exc.angle_deg)
         c = Constants.of(inputs, real4=True)
         try:
-            q = newton_positions(gsc.CRANK_DEG[::10] * (c.pi / 180.0), initial_estimate(c, True), c, True).q
+            q = listing_pass(gsc.CRANK_DEG[::10], initial_estimate(c, True), c, True).q
         except LinkageError as exc:
             row.update(replica=type(exc).__name__, replica_fail_deg=exc.angle_deg)
         else:

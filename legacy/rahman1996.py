@@ -15,7 +15,7 @@ import math
 
 import numpy as np
 
-from ..errors import ConvergenceError, SingularPositionError
+from ..errors import ConvergenceError, QPError, SingularPositionError
 from . import _rahman1996 as _f
 
 #: TABLE columns of ``cssp``: (table, quantity) in the order the FORTRAN fills them.
@@ -27,10 +27,6 @@ INERTIA_ROWS = [("crank", "i_xx"), ("crank", "i_yy"), ("crank", "i_zz"),
                 ("connecting_rod", "i_xx"), ("connecting_rod", "i_yy"), ("connecting_rod", "i_zz")]
 
 
-class QPError(ArithmeticError):
-    """QPROG could not solve: inconsistent constraints or the iteration limit."""
-
-
 def cssp(a1=2.0, a2=8.0, a4=1.0, alpha4_deg=250.0, s1=0.4, rpm=3000.0, solution=None) -> dict:
     """Run the CSSP program (both passes: objective, QPROG, comparison) once.
 
@@ -38,7 +34,9 @@ def cssp(a1=2.0, a2=8.0, a4=1.0, alpha4_deg=250.0, s1=0.4, rpm=3000.0, solution=
     (9 masses, lb*s^2/in) replaces QPROG's answer for the "after" columns (D055);
     by default QPROG's own is used.  Returns ``table`` (37 x 12, columns CSSP_COLUMNS,
     rows crank 0..360 deg), ``solution`` (9), ``inertia`` (6 x 2: before, after; rows
-    INERTIA_ROWS), ``hessian`` (9 x 9, h = 2*OF, REAL*4 as QPROG gets it), ``diag``.
+    INERTIA_ROWS), ``hessian`` (9 x 9, h = 2*OF, REAL*4 as QPROG gets it), ``diag``, and
+    ``positions`` (2 passes x 37 crank angles x theta2, eta2, theta3, eta3 in rad, s4 in in:
+    the Newton's converged joint variables, D053).
     """
     for name, value in (("a1", a1), ("a2", a2), ("rpm", rpm)):
         if not (math.isfinite(value) and value > 0):
@@ -51,7 +49,7 @@ def cssp(a1=2.0, a2=8.0, a4=1.0, alpha4_deg=250.0, s1=0.4, rpm=3000.0, solution=
         sol_in = np.asarray(solution, dtype=np.float32).ravel()
         if sol_in.shape != (9,) or not np.all(np.isfinite(sol_in)):
             raise ValueError("solution must hold 9 finite masses")
-    table, sol, inert, hout, diag, istat, fail_deg = _f.cssp(
+    table, sol, inert, hout, diag, istat, fail_deg, qout = _f.cssp(
         a1, a2, a4, alpha4_deg, s1, rpm, int(solution is not None), sol_in)
     if istat == 1:
         raise ConvergenceError("CSSP: Newton-Raphson failed after 150 iterations", float(fail_deg))
@@ -59,8 +57,13 @@ def cssp(a1=2.0, a2=8.0, a4=1.0, alpha4_deg=250.0, s1=0.4, rpm=3000.0, solution=
         raise SingularPositionError("CSSP: INVERSE met a zero pivot (MATRIX IS SINGULAR)", float(fail_deg))
     if istat == 3:
         raise QPError("CSSP: QPROG could not solve the balancing problem")
+    bad = ~np.isfinite(table).all(axis=1)
+    if bad.any():
+        raise SingularPositionError("CSSP: a non-finite value in the tables",
+                                    float(10 * np.argmax(bad)))
     return {"table": table, "solution": sol.astype(np.float64), "inertia": inert,
-            "hessian": hout.astype(np.float64), "diag": float(diag)}
+            "hessian": hout.astype(np.float64), "diag": float(diag),
+            "positions": qout.transpose(2, 1, 0).copy()}
 
 
 def inverse(s) -> np.ndarray:

@@ -27,3 +27,8 @@ class SingularPositionError(LinkageError):
 
 class ConvergenceError(LinkageError):
     """An iterative solver did not converge."""
+
+
+class QPError(ArithmeticError):
+    """A quadratic program has no solution: inconsistent constraints, the iteration limit,
+    or a Hessian that is not finite.  Raised alike by the legacy QPROG and the port's QP."""

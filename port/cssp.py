@@ -15,13 +15,13 @@ Units: inch, lbf, second, lb*s^2/in; crank angles in degrees at the interface.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
 
 import numpy as np
 import quadprog
 
+from ..errors import QPError
 from .cssp_data import QP_EQUALITIES, QP_ROWS, Constants, CsspInputs
-from .cssp_listing import Carry, initial_estimate, joint_rates, newton_positions, unit_loads
+from .cssp_listing import Carry, initial_estimate, listing_pass, unit_loads
 from .cssp_objective import UnitLoads, objective, position_forms, table_quantities
 from .cssp_quirks import CSSP_CORRECTED, CSSP_PRINTED, CsspQuirks
 
@@ -58,14 +58,18 @@ def hessian_shift(h: np.ndarray) -> float:
 def solve_qp(h: np.ndarray, rows: np.ndarray = QP_ROWS, bounds=None, equalities: int = QP_EQUALITIES):
     """min x'Hx/2 s.t. the first ``equalities`` rows x = bounds, the rest x >= bounds.
 
-    Returns (x, diag).  Raises ValueError when the constraints are inconsistent.
+    Returns (x, diag).  Raises QPError when the QP has no solution (inconsistent
+    constraints) or H is not finite.
     """
+    h = np.asarray(h, dtype=float)
+    if not np.all(np.isfinite(h)):
+        raise QPError("the balancing QP has a non-finite Hessian")
     diag = hessian_shift(h)
     try:
         x = quadprog.solve_qp(h + diag * np.eye(len(h)), np.zeros(len(h)), rows.T,
                               np.asarray(bounds, float), equalities)[0]
     except ValueError as exc:
-        raise ValueError(f"the balancing QP has no solution: {exc}") from exc
+        raise QPError(f"the balancing QP has no solution: {exc}") from exc
     return x, diag
 
 
@@ -76,29 +80,29 @@ class Pass:
     forms: np.ndarray        # (37, 9, 9)
 
 
-@lru_cache(maxsize=8)
 def _listing_motions(inputs: CsspInputs, real4: bool, printed_inverse: bool):
-    """The printed Newton's two passes (pass 2 starts with pass 1's last eta2, eta3)."""
+    """The printed Newton's two passes, one at a time (pass 2 starts with pass 1's last
+    eta2, eta3), so that a failure surfaces where the listing's would: after QP 1."""
     c = Constants.of(inputs, real4)
-    theta1 = CRANK_DEG * (c.pi / 180.0)
     start = initial_estimate(c, real4)
-    first = newton_positions(theta1, start, c, printed_inverse)
-    start[[1, 3]] = first.q[-1, [1, 3]]
-    second = newton_positions(theta1, start, c, printed_inverse)
-    return tuple(joint_rates(theta1, run.q, c, printed_inverse) for run in (first, second))
+    first = listing_pass(CRANK_DEG, start, c, printed_inverse)
+    yield first
+    start[[1, 3]] = first.eta2[-1], first.eta3[-1]
+    yield listing_pass(CRANK_DEG, start, c, printed_inverse)
 
 
-def _passes(inputs: CsspInputs, quirks: CsspQuirks, c: Constants) -> list[Pass]:
+def _passes(inputs: CsspInputs, quirks: CsspQuirks, c: Constants):
+    """The sweeps whose forms OF accumulates: the listing's two, or the closed loop's one."""
     positions = 37 if quirks.objective_37_positions else 36
     if quirks.open_loop_model:
-        carry, passes = Carry(), []
+        carry = Carry()
         for motion in _listing_motions(inputs, quirks.cssp_real4, quirks.inverse_without_pivoting):
             loads, carry = unit_loads(motion, c, quirks, carry)
-            passes.append(Pass(loads, position_forms(loads, c, quirks, positions)))
-        return passes
+            yield Pass(loads, position_forms(loads, c, quirks, positions))
+        return
     from .cssp_mechanics import closed_loop_loads
     loads = closed_loop_loads(c, np.radians(CRANK_DEG))
-    return [Pass(loads, position_forms(loads, c, quirks, positions))]
+    yield Pass(loads, position_forms(loads, c, quirks, positions))
 
 
 def balance(inputs: CsspInputs = CsspInputs(), quirks: CsspQuirks = CSSP_PRINTED) -> dict:
@@ -115,9 +119,9 @@ def balance(inputs: CsspInputs = CsspInputs(), quirks: CsspQuirks = CSSP_PRINTED
     c = Constants.of(inputs, quirks.cssp_real4)
     single = (lambda v: np.asarray(v, np.float32).astype(float)) if quirks.cssp_real4 else np.asarray
     counted = slice(0, 37 if quirks.objective_37_positions else 36)
-    passes = _passes(inputs, quirks, c)
-    accumulated, solutions, first_qp = np.zeros((9, 9)), [], None
-    for sweep in passes:
+    passes, accumulated, solutions, first_qp = [], np.zeros((9, 9)), [], None
+    for sweep in _passes(inputs, quirks, c):
+        passes.append(sweep)
         accumulated = accumulated + sweep.forms[counted].sum(axis=0)
         hessian = single(2.0 * accumulated)
         x, diag = solve_qp(hessian, bounds=c.qp_bounds)

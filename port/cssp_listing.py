@@ -9,7 +9,9 @@ reactions of the listing's equations (the 1991 method, eqs. 62-69).  Every quirk
 
 Units: inch, lbf, second, radians.  Arrays are over crank positions (n), point masses
 (9) and components (3).  The Newton iteration is sequential (each position starts from
-the previous one's answer, as printed); everything after it is vectorised.
+the previous one's answer, as printed) and compiled in the listing's order of operations
+(``spatial_newton``: it is chaotic where it wanders, so only the same roundings give the
+same answer); everything after it is vectorised.
 """
 from __future__ import annotations
 
@@ -17,13 +19,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import ConvergenceError
+from ..errors import ConvergenceError, SingularPositionError
+from . import spatial_newton as kernel
 from .cssp_data import Constants
 from .cssp_objective import UnitLoads
 from .cssp_quirks import CsspQuirks
 from .dual import DualMatrix
 
-MAX_ITERATIONS = 150
 _ROT_OPERATOR = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 0.0]])
 
 
@@ -73,37 +75,17 @@ def _about_axis(theta) -> np.ndarray:
     return _mat3([[0.0, 0.0, ct], [0.0, 0.0, st], [-ct, -st, 0.0]])
 
 
-def printed_inverse(s: np.ndarray) -> np.ndarray:
-    """The listing's INVERSE for a 5x5 matrix: Gauss-Jordan with no pivoting (D084).
-
-    The order of operations is the listing's: forward elimination building L^-1 in the
-    right half, then back substitution, then division by the pivots.  (It swaps rows only
-    on an exactly zero pivot, and then returns the inverse of the row-permuted matrix; here
-    an exactly zero pivot raises ZeroDivisionError, which the callers report.)
-    """
-    c = np.hstack([np.array(s, dtype=float), np.eye(5)])
-    for k in range(4):                                    # pivots 1..4 and L^-1 in columns 6..9
-        if c[k, k] == 0.0:
-            raise ZeroDivisionError("INVERSE: zero pivot")
-        rows, cols = slice(k + 1, 5), slice(k + 1, 5 + k)
-        c[rows, cols] = c[rows, cols] - (c[rows, k, None] * c[k, cols]) / c[k, k]
-        c[rows, 5 + k] = -c[rows, k] / c[k, k]
-    if c[4, 4] == 0.0:
-        raise ZeroDivisionError("INVERSE: zero pivot")
-    right = slice(5, 10)                                  # back substitution: pivot 5 ...
-    c[:4, right] = c[:4, right] - (c[4, right] * c[:4, 4, None]) / c[4, 4]
-    for k in range(3, 0, -1):                             # ... then pivots 4, 3, 2
-        cols = slice(k + 1, 10)
-        c[:k, cols] = c[:k, cols] - (c[:k, k, None] * c[k, cols]) / c[k, k]
-    return c[:, 5:] / np.diag(c)[:, None]
-
-
-def pseudo_inverse(a: np.ndarray, printed: bool) -> np.ndarray:
-    """(A'A)^-1 A' of 6 x 5 matrices (..., 6, 5): with the listing's INVERSE (one matrix),
-    or by LU with pivoting."""
-    at = np.swapaxes(a, -1, -2)
-    ata = at @ a
-    return printed_inverse(ata) @ at if printed else np.linalg.solve(ata, at)
+def printed_inverse(s) -> np.ndarray:
+    """The listing's INVERSE of a 5 x 5 matrix (D084): Gauss-Jordan without pivoting, rows
+    exchanged only on an exactly zero pivot.  Raises SingularPositionError where the listing
+    prints MATRIX IS SINGULAR and STOPs."""
+    s = np.asarray(s, dtype=float)
+    if s.shape != (5, 5):
+        raise ValueError(f"INVERSE is written for 5 x 5 matrices, got {s.shape}")
+    b, singular = kernel.listing_inverse(np.ascontiguousarray(s))
+    if singular:
+        raise SingularPositionError("INVERSE: MATRIX IS SINGULAR")
+    return b
 
 
 def loop_operators(theta1, q: np.ndarray, c: Constants) -> tuple[DualMatrix, DualMatrix]:
@@ -126,67 +108,13 @@ def loop_operators(theta1, q: np.ndarray, c: Constants) -> tuple[DualMatrix, Dua
     return carry @ operators @ carry.T, h5 @ _m4(q[..., 4], c)
 
 
-def newton_step(theta1, q: np.ndarray, c: Constants, printed: bool = True) -> np.ndarray:
-    """One printed step: DELTA = (A'A)^-1 A' V at q (..., 5) = (theta2, eta2, theta3, eta3, s4).
-
-    Column j of A holds elements (1,2), (1,3), (2,3) of the real and dual parts of
-    H_j = G_j Q_j G_j': the derivative operator Q_j of joint j carried to frame {1}.
-    """
-    h, b = loop_operators(theta1, q, c)
-    rows, cols = (0, 0, 1), (1, 2, 2)
-    a = np.moveaxis(np.concatenate([h.real[..., rows, cols], h.dual[..., rows, cols]], axis=-1), 0, -1)
-    br, bd = b.real, b.dual
-    v = np.stack([br[..., 1, 0] + br[..., 0, 0] + br[..., 1, 1] - 2.0,
-                  br[..., 2, 0] + br[..., 0, 0] + br[..., 2, 2] - 2.0,
-                  br[..., 2, 1] + br[..., 1, 1] + br[..., 2, 2] - 2.0, bd[..., 1, 0], bd[..., 2, 0], bd[..., 2, 1]],
-                 axis=-1)
-    return (pseudo_inverse(a, printed) @ v[..., None])[..., 0]
-
-
-@dataclass
-class NewtonRun:
-    q: np.ndarray            # (n, 5): theta2, eta2, theta3, eta3, s4 at each position
-    iterations: np.ndarray   # (n,) Newton steps taken
-
-
-def newton_positions(theta1: np.ndarray, q0: np.ndarray, c: Constants, printed: bool = True) -> NewtonRun:
-    """The printed iteration over the positions in order, each from the last answer.
-
-    It stops when every component of the step is <= 1e-7 and keeps the point before
-    that step; after 150 evaluations it fails (the listing's STOP, here ConvergenceError).
-    ``printed``: invert A'A with the listing's INVERSE (no pivoting), else LU.
-    """
-    if not np.all(np.isfinite(q0)):
-        raise ConvergenceError("CSSP: the listing's first estimate sqrt(a2^2-(a1+a4)^2) is not real",
-                               round(float(theta1[0] * 180.0 / c.pi), 6))
-    q = np.array(q0, dtype=float)
-    out, iterations = np.empty((len(theta1), 5)), np.empty(len(theta1), dtype=int)
-    for j, th in enumerate(theta1):
-        for i in range(1, MAX_ITERATIONS + 1):
-            try:
-                delta = newton_step(th, q, c, printed)
-            except (ZeroDivisionError, np.linalg.LinAlgError):
-                delta = np.full(5, np.nan)
-            if not np.all(np.isfinite(delta)):
-                raise ConvergenceError("CSSP Newton-Raphson: singular normal equations",
-                                       round(float(th * 180.0 / c.pi), 6))
-            if np.all(np.abs(delta) <= c.newton_tol):
-                break
-            q = q + delta
-        else:
-            raise ConvergenceError(f"CSSP Newton-Raphson failed after {MAX_ITERATIONS} iterations",
-                                   round(float(th * 180.0 / c.pi), 6), step=float(np.max(np.abs(delta))))
-        out[j], iterations[j] = q, i
-    return NewtonRun(out, iterations)
-
-
 def initial_estimate(c: Constants, real4: bool) -> np.ndarray:
     """The listing's start: s4 = sqrt(a2^2-(a1+a4)^2) (REAL*4), theta2 = pi - atan(s4/(a1+a4))."""
     kind = np.float32 if real4 else np.float64
     a1, a2, a4 = (kind(v) for v in (c.a1, c.a2, c.a4))
     with np.errstate(invalid="ignore"):                   # not real: NaN, refused by the Newton
         s4 = float(np.sqrt(a2 ** 2 - (a1 + a4) ** 2))
-    theta2 = c.pi - np.arctan(s4 / (c.a4 + c.a1))
+    theta2 = c.pi - np.arctan(s4 / float(a4 + a1))       # A4+A1: a REAL*4 sum in the listing
     return np.array([theta2, 0.0, 2.0 * c.pi - theta2, 0.0, s4])
 
 
@@ -202,33 +130,34 @@ class Motion:
     rates: np.ndarray        # (n, 5): theta2', theta3', eta2', eta3', s4' (the listing's DOT order)
     accels: np.ndarray       # (n, 5): the same order (DDOT)
 
+    @property
+    def q(self) -> np.ndarray:
+        """(n, 5): theta2, eta2, theta3, eta3 (rad), s4 (in), the Newton's order."""
+        return np.stack([self.theta2, self.eta2, self.theta3, self.eta3, self.s4], axis=1)
 
-def joint_rates(theta1, q: np.ndarray, c: Constants, printed: bool = True) -> Motion:
-    """Velocities and accelerations by the listing's VM, VV and AV (constant crank speed)."""
+
+def listing_pass(crank_deg: np.ndarray, q0: np.ndarray, c: Constants, printed: bool = True) -> Motion:
+    """One pass of the listing's DO 400 loop over the crank angles (deg): at each, the
+    printed Newton from the last answer, then the rates by VM, VV and AV (constant crank
+    speed), compiled in the listing's order of operations (``spatial_newton``).
+
+    Raises where the listing STOPs, at the same crank angle: ConvergenceError after 150
+    Newton evaluations, SingularPositionError when INVERSE meets a zero pivot (in the
+    Newton's A'A or the rates' VM'VM).  ``printed``: invert with the listing's INVERSE,
+    else by LU with pivoting.
+    """
+    deg = np.asarray(crank_deg, dtype=float)
+    theta1 = deg * (c.pi / 180.0)
+    q, dot, ddot, _, status, j = kernel.listing_sweep(theta1, np.asarray(q0, dtype=float), c.a1, c.a2, c.a4,
+                                                      c.alpha4, c.s1, c.omega, c.newton_tol, printed)
+    if status == kernel.NOT_CONVERGED:
+        why = ("the first estimate sqrt(a2^2-(a1+a4)^2) is not real" if not np.all(np.isfinite(q0))
+               else f"no convergence after {kernel.MAX_ITERATIONS} iterations")
+        raise ConvergenceError(f"CSSP Newton-Raphson: {why}", float(deg[j]))
+    if status == kernel.SINGULAR:
+        raise SingularPositionError("CSSP: INVERSE met a zero pivot (MATRIX IS SINGULAR)", float(deg[j]))
     t2, e2, t3, e3, s4 = q.T
-    n, w1 = len(t2), c.omega
-    s_t2, c_t2, s_e2, c_e2, s_t3, c_t3 = np.sin(t2), np.cos(t2), np.sin(e2), np.cos(e2), np.sin(t3), np.cos(t3)
-    vm = np.zeros((n, 6, 5))
-    vm[:, 0, 0], vm[:, 0, 2], vm[:, 1, 4] = -s_e2, s_t2 * c_e2, s_t3
-    vm[:, 2, 2], vm[:, 2, 3] = c_t2, 1.0
-    vm[:, 3, 0], vm[:, 3, 2], vm[:, 3, 4] = c.a2 * c_e2, c.a2 * s_t2 * s_e2, -c_t3
-    vm[:, 4, 0], vm[:, 4, 1], vm[:, 4, 2] = c_e2, 1.0, s_t2 * s_e2
-    vm[:, 5, 2] = -c.a2 * c_t2
-    vv = np.stack([w1 * s_e2, -c.a1 * w1 * s_t2 * c_e2, np.zeros(n), -w1 * (c.a1 * c_t2 + c.a2 * c_e2),
-                   -w1 * c_e2, -w1 * c.a1 * s_t2 * s_e2], -1)
-    pseudo = np.stack([pseudo_inverse(vm_j, printed) for vm_j in vm])   # (VM'VM)^-1 VM'
-    rates = np.einsum("nij,nj->ni", pseudo, vv)
-    d_t2, d_t3, d_e2, d_e3, d_s4 = rates.T
-    av = np.stack([
-        d_e2 * (w1 + d_t2) * c_e2 - d_e2 * (d_t2 * c_t2 * c_e2 - d_e2 * s_t2 * s_e2),
-        c.a1 * (w1 * s_t2 * s_e2 * d_e2 - w1 * d_t2 * c_t2 * c_e2) - d_s4 * d_t3 * c_t3,
-        d_t2 * d_e2 * s_t2,
-        c.a1 * s_t2 * w1 * d_t2 + c.a2 * s_e2 * d_e2 * (w1 + d_t2)
-        - c.a2 * d_e2 * (c_t2 * s_e2 * d_t2 + s_t2 * c_e2 * d_e2) - s_t3 * d_t3 * d_s4,
-        w1 * d_e2 * s_e2 + s_e2 * d_e2 * d_t2 - d_e2 * (c_t2 * s_e2 * d_t2 + s_t2 * c_e2 * d_e2),
-        -c.a1 * w1 * d_t2 * c_t2 * s_e2 - c.a1 * s_t2 * c_e2 * w1 * d_e2 - c.a2 * d_t2 * d_e2 * s_t2], -1)
-    accels = np.einsum("nij,nj->ni", pseudo, av)
-    return Motion(np.asarray(theta1, float), t2, e2, t3, e3, s4, rates, accels)
+    return Motion(theta1, t2, e2, t3, e3, s4, dot, ddot)
 
 
 def _crank_frames(theta1, omega):

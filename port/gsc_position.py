@@ -3,9 +3,10 @@
 The printed method: Newton-Raphson on the dual-number loop closure M1 L2 L3 M4 = I
 (eqs. 5-26): six equations, five joint variables q = (theta2, eta2, theta3, eta3, S4), the
 step Delta = (A'A)^-1 A' V.  The 1996 program by the same author runs exactly this
-iteration; its port (``cssp_listing.newton_step``, equal to the legacy build to 1e-14) is
-reused here with the 1996 program's stopping rule (every |Delta| <= 1e-7, at most 150
-steps), since the 1991 thesis gives none.  When Newton fails at a position that follows a
+iteration; its compiled kernel (``spatial_newton.newton``, equal to the legacy build bit
+for bit) serves here too, with the 1996 program's stopping rule (every |Delta| <= 1e-7, at
+most 150 steps), since the 1991 thesis gives none, and A'A solved by LU with pivoting (the
+thesis prints no inverse).  When Newton fails at a position that follows a
 converged one, Hall, Root and Sandgren's fallback (section 2.6.1) minimises the loop-closure
 error ||B - I||^2 by Davidon-Fletcher-Powell from that answer and hands the result back to
 Newton.
@@ -19,12 +20,12 @@ from __future__ import annotations
 import functools
 import math
 from dataclasses import dataclass, replace
-from types import SimpleNamespace
 
 import numpy as np
 
+from . import spatial_newton as kernel
 from .cssp_data import Constants, CsspInputs
-from .cssp_listing import MAX_ITERATIONS, initial_estimate, loop_operators, newton_step
+from .cssp_listing import initial_estimate, loop_operators
 from .gsc_data import GscInputs
 
 NEWTON_TOL = 1e-7      # the 1996 program's limit on every |Delta| (in, rad)
@@ -78,10 +79,11 @@ def residual(theta1: float, q: np.ndarray, c: Constants) -> tuple[np.ndarray, np
 
 
 def newton(theta1: float, q: np.ndarray, c: Constants) -> tuple[np.ndarray, bool, int]:
-    """The printed iteration from q (5,) for one configuration: (answer, converged, steps)."""
-    one = SimpleNamespace(**{k: np.array([getattr(c, k)], dtype=float) for k in ("a1", "a2", "a4", "alpha4", "s1")})
-    q, done, steps = newton_batch(theta1, np.asarray(q, dtype=float)[None, :], one)
-    return q[0], bool(done[0]), int(steps[0])
+    """The printed iteration from q (5,) at one crank angle (rad): (answer, converged, steps).
+    A singular A'A or a non-finite step fails at once (the iteration cannot recover)."""
+    q, status, steps = kernel.newton(float(theta1), np.asarray(q, dtype=float), c.a1, c.a2, c.a4, c.alpha4,
+                                     c.s1, NEWTON_TOL, kernel.MAX_ITERATIONS, False)
+    return q, status == kernel.OK, int(steps)
 
 
 def dfp(theta1: float, q: np.ndarray, c: Constants) -> np.ndarray:
@@ -112,91 +114,39 @@ def dfp(theta1: float, q: np.ndarray, c: Constants) -> np.ndarray:
     return q
 
 
-def _batch_constants(inputs: list[GscInputs], s1: np.ndarray) -> SimpleNamespace:
-    """The fields newton_step reads, one value per configuration (arrays (B,))."""
-    field = lambda f: np.array([f(x) for x in inputs], dtype=float)
-    return SimpleNamespace(a1=field(lambda x: x.a1), a2=field(lambda x: x.a2), a4=field(lambda x: x.a4),
-                           alpha4=field(lambda x: x.alpha4), s1=np.asarray(s1, dtype=float))
+def positions(inputs: GscInputs, theta1, use_dfp: bool = True, stop_at_failure: bool = False) -> PositionRun:
+    """Solve every crank angle theta1 (rad, in sweep order) by the printed method.
 
-
-def _subset(c: SimpleNamespace, rows: np.ndarray) -> SimpleNamespace:
-    return SimpleNamespace(**{k: v[rows] for k, v in vars(c).items()})
-
-
-def _batch_step(theta1: float, q: np.ndarray, c: SimpleNamespace) -> np.ndarray:
-    """newton_step for many configurations at once; NaN rows where A'A is singular."""
-    try:
-        return newton_step(theta1, q, c, printed=False)
-    except np.linalg.LinAlgError:
-        out = np.full(q.shape, np.nan)
-        for k in range(q.shape[0]):
-            try:
-                out[k] = newton_step(theta1, q[k], _subset(c, np.array([k])), printed=False)[0]
-            except np.linalg.LinAlgError:
-                pass
-        return out
-
-
-def newton_batch(theta1: float, q: np.ndarray, c: SimpleNamespace) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """The printed iteration for B configurations at once, q (B, 5), c's fields (B,): each
-    stops when every |Delta| <= NEWTON_TOL (converged) or at a non-finite step or after
-    MAX_ITERATIONS (failed).  Returns (answers, converged (B,), steps taken (B,))."""
-    q = q.copy()
-    nb = q.shape[0]
-    done, failed, steps = np.zeros(nb, dtype=bool), np.zeros(nb, dtype=bool), np.full(nb, MAX_ITERATIONS)
+    A failed angle leaves the next one to start from the last answer, or
+    (``stop_at_failure``) ends the sweep, as the thesis's program stops."""
+    th = np.asarray(theta1, dtype=float)
+    n = th.size
+    s1 = inputs.axial(th)[0]
+    ok = assembles(inputs, th, s1)
+    q_out, closure = np.full((n, 5), np.nan), np.full(n, np.nan)
+    status, steps = np.full(n, NOT_CONVERGED, dtype=object), np.zeros(n, dtype=int)
+    status[~ok] = CANNOT_ASSEMBLE
+    guess = initial_estimate(constants(inputs, s1[0]), real4=False)
     with np.errstate(all="ignore"):
-        for step in range(1, MAX_ITERATIONS + 1):
-            act = np.flatnonzero(~done & ~failed)
-            if act.size == 0:
+        for i in range(n):
+            if not (ok[i] and np.all(np.isfinite(guess))):
+                continue
+            c = constants(inputs, s1[i])
+            q, done, steps[i] = newton(th[i], guess, c)
+            if done:
+                status[i] = NEWTON
+            elif use_dfp and (i == 0 or status[i - 1] != NOT_CONVERGED):   # DFP only after a converged position
+                q, done, steps[i] = newton(th[i], dfp(th[i], guess, c), c)
+                status[i] = DFP_THEN_NEWTON if done else NOT_CONVERGED
+            if done:
+                q_out[i], guess = q, q
+                closure[i] = np.linalg.norm(residual(th[i], q, c)[0])
+            elif stop_at_failure:
                 break
-            delta = _batch_step(theta1, q[act], _subset(c, act))
-            bad = ~np.all(np.isfinite(delta), axis=1)
-            small = ~bad & np.all(np.abs(delta) <= NEWTON_TOL, axis=1)
-            failed[act[bad]], done[act[small]], steps[act[bad | small]] = True, True, step
-            q[act[~bad & ~small]] += delta[~bad & ~small]
-    return q, done, steps
+    return PositionRun(q_out, status, closure, steps)
 
 
 def positions_batch(inputs: list[GscInputs], theta1, use_dfp: bool = True,
                     stop_at_failure: bool = False) -> list[PositionRun]:
-    """Solve every crank angle theta1 (rad, in sweep order) by the printed method, for several
-    configurations at once (the Newton steps of all of them in one array operation).
-
-    A failed angle leaves the next one to start from the last answer, or
-    (``stop_at_failure``) ends that configuration's sweep, as the thesis's program stops."""
-    th = np.asarray(theta1, dtype=float)
-    nb, n = len(inputs), th.size
-    s1 = np.stack([x.axial(th)[0] for x in inputs])                     # (B, n)
-    ok = np.stack([assembles(x, th, s) for x, s in zip(inputs, s1)])
-    q_out, closure = np.full((nb, n, 5), np.nan), np.full((nb, n), np.nan)
-    status, steps = np.full((nb, n), NOT_CONVERGED, dtype=object), np.zeros((nb, n), dtype=int)
-    status[~ok] = CANNOT_ASSEMBLE
-    guess = np.stack([initial_estimate(constants(x, s[0]), real4=False) for x, s in zip(inputs, s1)])
-    alive = np.ones(nb, dtype=bool)
-    with np.errstate(all="ignore"):
-        for i in range(n):
-            c = _batch_constants(inputs, s1[:, i])
-            todo = ok[:, i] & alive & np.all(np.isfinite(guess), axis=1)
-            q, done = guess.copy(), np.zeros(nb, dtype=bool)
-            rows = np.flatnonzero(todo)
-            q[rows], done[rows], steps[rows, i] = newton_batch(th[i], guess[rows], _subset(c, rows))
-            status[done, i] = NEWTON
-            retry = np.flatnonzero(todo & ~done) if use_dfp else np.array([], dtype=int)
-            for k in retry:
-                if i > 0 and status[k, i - 1] == NOT_CONVERGED:
-                    continue                                   # DFP only after a converged position
-                ck = constants(inputs[k], s1[k, i])
-                qk, ok_k, steps[k, i] = newton(th[i], dfp(th[i], guess[k], ck), ck)
-                if ok_k:
-                    q[k], done[k], status[k, i] = qk, True, DFP_THEN_NEWTON
-            for k in np.flatnonzero(done):
-                q_out[k, i], guess[k] = q[k], q[k]
-                closure[k, i] = np.linalg.norm(residual(th[i], q[k], constants(inputs[k], s1[k, i]))[0])
-            if stop_at_failure:
-                alive &= done | ~ok[:, i]
-    return [PositionRun(q_out[k], status[k], closure[k], steps[k]) for k in range(nb)]
-
-
-def positions(inputs: GscInputs, theta1, use_dfp: bool = True, stop_at_failure: bool = False) -> PositionRun:
-    """One configuration's sweep (``positions_batch`` of one)."""
-    return positions_batch([inputs], theta1, use_dfp, stop_at_failure)[0]
+    """``positions`` for several configurations."""
+    return [positions(x, theta1, use_dfp, stop_at_failure) for x in inputs]

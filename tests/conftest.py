@@ -1,9 +1,19 @@
-"""Shared fixtures: the repository root (for legacy/printed, legacy/src) and the register."""
+"""Shared fixtures: the repository root (for legacy/printed, legacy/src) and the register;
+the hypothesis profiles of the property-based tests."""
+import os
 from pathlib import Path
 
 import pytest
+from hypothesis import HealthCheck, settings
 
 ROOT = Path(__file__).resolve().parent.parent
+
+# "ci" (the default): no example database, a fixed seed (derandomize), no deadline (the first
+# call of a compiled kernel compiles it).  "thorough": ten times the examples, for `make fuzz`.
+settings.register_profile("ci", database=None, derandomize=True, deadline=None, print_blob=True,
+                          suppress_health_check=[HealthCheck.too_slow])
+settings.register_profile("thorough", parent=settings.get_profile("ci"), max_examples=1000)
+settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))
 
 
 @pytest.fixture(scope="session")

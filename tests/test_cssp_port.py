@@ -100,7 +100,7 @@ def test_hessian_shift_is_zero_for_positive_definite_and_minimal_otherwise():
 
 def test_listing_loop_does_not_close_and_corrected_does(printed):
     """D079: the printed Newton's positions leave the rod 7.7-8.5 in long (a2 = 8)."""
-    motion = _listing_motions(CsspInputs(), True, True)[1]
+    motion = list(_listing_motions(CsspInputs(), True, True))[1]
     c = Constants.of(CsspInputs(), True)
     th = CRANK_DEG * c.pi / 180
     pin = np.stack([c.a1 * np.cos(th), c.a1 * np.sin(th), np.full(37, c.s1)], -1)

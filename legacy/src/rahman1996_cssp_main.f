@@ -11,9 +11,10 @@ C     PROGRAM CANNOT RUN WITHOUT THEM, EACH MARKED BY A [LINKREPRO]
 C     COMMENT.  SEE THE TRANSCRIPTION NOTES FOR SEED LINES AND READINGS.
 C
       SUBROUTINE CSSP(A1,A2,A4,AL4,S1,RPM,USESOL,SOLIN,TABLE,SOLOUT,    ! D051
-     1 INERT,HOUT,DIAGO,ISTAT,FAILDG)                                   ! D051
+     1 INERT,HOUT,DIAGO,ISTAT,FAILDG,QOUT)                              ! D051
       INTEGER USESOL,ISTAT,IQP,IERINV                                   ! D051
       REAL SOLIN(9),SOLOUT(9),HOUT(9,9),DIAGO,FAILDG                    ! D051
+      REAL*8 QOUT(5,37,2)                                               ! D053
       DOUBLE PRECISION TABLE(37,12),INERT(6,2)                          ! D051
       COMMON /INVERR/ IERINV                                            ! D052
 C************Declaration of the variables*********************
@@ -412,6 +413,11 @@ C
       TH3=THT3/DEGRAD
       ET2=ETA2/DEGRAD
       ET3=ETA3/DEGRAD
+      QOUT(1,J,I3)=THT2                                                 ! D053
+      QOUT(2,J,I3)=ETA2                                                 ! D053
+      QOUT(3,J,I3)=THT3                                                 ! D053
+      QOUT(4,J,I3)=ETA3                                                 ! D053
+      QOUT(5,J,I3)=S4                                                   ! D053
 C Derivative of joint variables
       VM(1,1)=-SIN(ETA2)
       VM(1,3)=SIN(THT2)*COS(ETA2)

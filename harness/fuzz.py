@@ -1,0 +1,1 @@
+"""Placeholder: the fuzz run over every public entry point (issue 11, in progress)."""

@@ -1,0 +1,1 @@
+"""Placeholder: the port of our QPROG stand-in (issue 11, in progress)."""
