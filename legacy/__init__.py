@@ -14,15 +14,22 @@ g = 32.178*12 in/s^2, as the listing divides).
 Errors: ``ValueError`` for bad parameters (checked here, before FORTRAN sees them),
 ``AssemblyError`` when the four-bar (or its cognate) cannot close at some input
 angle, ``SingularPositionError`` when a position gives a non-finite result.
+
+Threads: every call into the compiled FORTRAN (static storage) holds ``FORTRAN_LOCK``;
+calls from several threads are serialized and each returns what it would alone.
 """
 from __future__ import annotations
 
 import math
+import threading
 
 import numpy as np
 
 from ..errors import AssemblyError, SingularPositionError
 from . import _ali1977 as _f
+
+#: held around every call into the compiled Ali (1977) FORTRAN (static storage)
+FORTRAN_LOCK = threading.Lock()
 from .rahman1996 import CSSP_COLUMNS, QPError, cssp, inverse, qprog
 
 #: Constants as the printed REAL*4 literals hold them (IEEE single here; see D030).
@@ -100,8 +107,9 @@ def case1_source(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_SOURCE_PRI
     Note that the listing truncates ``rpm`` to an INTEGER (``N=SPEED``).
     """
     n = _check_inputs((l1, l2, l3, l4, l5), alp, rpm, mass_lbf, area, modulus, inertia, step_deg)
-    deg, xp, yp, dx, dy, rot, istat = _f.ked1s(l1, l2, l3, l4, l5, alp, rpm, mass_lbf,
-                                               area, modulus, inertia, step_deg, n)
+    with FORTRAN_LOCK:
+        deg, xp, yp, dx, dy, rot, istat = _f.ked1s(l1, l2, l3, l4, l5, alp, rpm, mass_lbf,
+                                                   area, modulus, inertia, step_deg, n)
     out = {"deg": deg, "xp": xp, "yp": yp, "dx": dx, "dy": dy, "rot": rot}
     _raise_on_status(istat, deg, {k: v for k, v in out.items() if k != "deg"}, "KED1S")
     return out
@@ -119,8 +127,9 @@ def case1_cognate(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_P
     ``dx, dy`` (cognate deflections, in) and ``rot`` (rad).  Default speed 300 rpm.
     """
     n = _check_inputs((l1, l2, l3, l4, l5), alp, rpm, mass_lbf, area, modulus, inertia, step_deg)
-    deg, xp, yp, cxp, cyp, dx, dy, rot, istat = _f.ked1c(
-        l1, l2, l3, l4, l5, alp, rpm, mass_lbf, area, modulus, inertia, step_deg, n)
+    with FORTRAN_LOCK:
+        deg, xp, yp, cxp, cyp, dx, dy, rot, istat = _f.ked1c(
+            l1, l2, l3, l4, l5, alp, rpm, mass_lbf, area, modulus, inertia, step_deg, n)
     out = {"deg": deg, "xp": xp, "yp": yp, "cxp": cxp, "cyp": cyp, "dx": dx, "dy": dy, "rot": rot}
     _raise_on_status(istat, deg, {k: v for k, v in out.items() if k != "deg"}, "KED1C")
     return out
@@ -135,8 +144,9 @@ def case2_source(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_PR
     ``deg``, ``xp, yp`` (coupler point, in), ``dx, dy`` (in) and ``rot`` (rad).
     """
     n = _check_inputs((l1, l2, l3, l4, l5), alp, rpm, density, area, modulus, inertia, step_deg)
-    deg, xp, yp, dx, dy, rot, istat = _f.ked2s(l1, l2, l3, l4, l5, alp, rpm, density, area,
-                                               modulus, inertia, step_deg, n)
+    with FORTRAN_LOCK:
+        deg, xp, yp, dx, dy, rot, istat = _f.ked2s(l1, l2, l3, l4, l5, alp, rpm, density, area,
+                                                   modulus, inertia, step_deg, n)
     out = {"deg": deg, "xp": xp, "yp": yp, "dx": dx, "dy": dy, "rot": rot}
     _raise_on_status(istat, deg, {k: v for k, v in out.items() if k != "deg"}, "KED2S")
     return out
@@ -152,8 +162,9 @@ def case2_cognate(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_P
     ``dx, dy`` (in) and ``rot`` (rad).
     """
     n = _check_inputs((l1, l2, l3, l4, l5), alp, rpm, density, area, modulus, inertia, step_deg)
-    deg, xp, yp, cxp, cyp, dx, dy, rot, istat = _f.ked2c(l1, l2, l3, l4, l5, alp, rpm, density, area,
-                                                         modulus, inertia, step_deg, n)
+    with FORTRAN_LOCK:
+        deg, xp, yp, cxp, cyp, dx, dy, rot, istat = _f.ked2c(l1, l2, l3, l4, l5, alp, rpm, density, area,
+                                                             modulus, inertia, step_deg, n)
     out = {"deg": deg, "xp": xp, "yp": yp, "cxp": cxp, "cyp": cyp, "dx": dx, "dy": dy, "rot": rot}
     _raise_on_status(istat, deg, {k: v for k, v in out.items() if k != "deg"}, "KED2C")
     return out
@@ -171,8 +182,9 @@ def case3_source(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_PR
     n = _check_inputs((l1, l2, l3, l4, l5), alp, rpm, density, area, modulus, inertia, step_deg)
     if l2 <= 8.0:
         raise ValueError(f"l2={l2}: the listing's nodes L2-2 ... L2-8 need l2 > 8 in")
-    deg, xp, yp, deflections, istat = _f.ked3s(l1, l2, l3, l4, l5, alp, rpm, density, area,
-                                               modulus, inertia, step_deg, n)
+    with FORTRAN_LOCK:
+        deg, xp, yp, deflections, istat = _f.ked3s(l1, l2, l3, l4, l5, alp, rpm, density, area,
+                                                   modulus, inertia, step_deg, n)
     nodes = np.ascontiguousarray(deflections.T.reshape(n, 5, 3))
     out = {"deg": deg, "xp": xp, "yp": yp, "dx": nodes[:, 0, 0], "dy": nodes[:, 0, 1],
            "rot": nodes[:, 0, 2], "nodes": nodes}
@@ -187,8 +199,9 @@ def case3_cognate(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_P
     cognate listing with the Case III source listing's changes (the tip node's weight
     density*area*CL2, double-precision loads, E*I bending).  Returns as case1_cognate."""
     n = _check_inputs((l1, l2, l3, l4, l5), alp, rpm, density, area, modulus, inertia, step_deg)
-    deg, xp, yp, cxp, cyp, dx, dy, rot, istat = _f.ked3c(l1, l2, l3, l4, l5, alp, rpm, density, area,
-                                                         modulus, inertia, step_deg, n)
+    with FORTRAN_LOCK:
+        deg, xp, yp, cxp, cyp, dx, dy, rot, istat = _f.ked3c(l1, l2, l3, l4, l5, alp, rpm, density, area,
+                                                             modulus, inertia, step_deg, n)
     out = {"deg": deg, "xp": xp, "yp": yp, "cxp": cxp, "cyp": cyp, "dx": dx, "dy": dy, "rot": rot}
     _raise_on_status(istat, deg, {k: v for k, v in out.items() if k != "deg"}, "KED3C")
     return out
@@ -200,7 +213,8 @@ def gmtra(a: np.ndarray) -> np.ndarray:
     if a.ndim != 2 or a.size == 0:
         raise ValueError("gmtra needs a non-empty 2-D matrix")
     n, m = a.shape
-    r = _f.gmtra(a.ravel(order="F"), n, m)
+    with FORTRAN_LOCK:
+        r = _f.gmtra(a.ravel(order="F"), n, m)
     return r.reshape((m, n), order="F")
 
 
@@ -233,10 +247,12 @@ def mprd(a: np.ndarray, b: np.ndarray, n: int, m: int, l: int, msa: int = 0, msb
     if a.size != need_a or b.size != need_b:
         raise ValueError(f"storage vectors must hold {need_a} (A) and {need_b} (B) elements, "
                          f"got {a.size} and {b.size}")
-    r = _f.mprd(a, b, n, m, msa, msb, l)
+    with FORTRAN_LOCK:
+        r = _f.mprd(a, b, n, m, msa, msb, l)
     return r if (msa == 2 and msb == 2) else r.reshape((n, l), order="F")
 
 
 def loc(i: int, j: int, n: int, m: int, ms: int) -> int:
     """SSP LOC: 1-based storage subscript of element (i, j); 0 when not stored."""
-    return int(_f.loc(i, j, n, m, ms))
+    with FORTRAN_LOCK:
+        return int(_f.loc(i, j, n, m, ms))

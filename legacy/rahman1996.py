@@ -8,15 +8,24 @@ Units as printed: inch, lbf, second; masses lb*s^2/in; inertias lb*s^2*in; angle
 Errors: ``ValueError`` for bad parameters, ``ConvergenceError`` when the printed
 Newton-Raphson gives up after 150 iterations (the listing's STOP), ``SingularPositionError``
 when INVERSE meets an exactly zero pivot (its STOP), ``QPError`` when QPROG fails.
+
+Threads: the FORTRAN keeps static storage (-fno-automatic, COMMON /INVERR/, /QPSTAT/), and
+a status is read by a second call after the routine returns.  Every call sequence here holds
+``FORTRAN_LOCK``, so calls from several threads are serialized and each returns what it
+would alone (f2py holds the GIL during a call as well: the FORTRAN never runs twice at once).
 """
 from __future__ import annotations
 
 import math
+import threading
 
 import numpy as np
 
 from ..errors import ConvergenceError, QPError, SingularPositionError
 from . import _rahman1996 as _f
+
+#: held around every call into the compiled Rahman (1996) FORTRAN (static storage, see above)
+FORTRAN_LOCK = threading.Lock()
 
 #: TABLE columns of ``cssp``: (table, quantity) in the order the FORTRAN fills them.
 CSSP_COLUMNS = [("5_2", "before"), ("5_2", "after"), ("5_3", "before"), ("5_3", "after"),
@@ -49,8 +58,9 @@ def cssp(a1=2.0, a2=8.0, a4=1.0, alpha4_deg=250.0, s1=0.4, rpm=3000.0, solution=
         sol_in = np.asarray(solution, dtype=np.float32).ravel()
         if sol_in.shape != (9,) or not np.all(np.isfinite(sol_in)):
             raise ValueError("solution must hold 9 finite masses")
-    table, sol, inert, hout, diag, istat, fail_deg, qout = _f.cssp(
-        a1, a2, a4, alpha4_deg, s1, rpm, int(solution is not None), sol_in)
+    with FORTRAN_LOCK:
+        table, sol, inert, hout, diag, istat, fail_deg, qout = _f.cssp(
+            a1, a2, a4, alpha4_deg, s1, rpm, int(solution is not None), sol_in)
     if istat == 1:
         raise ConvergenceError("CSSP: Newton-Raphson failed after 150 iterations", float(fail_deg))
     if istat == 2:
@@ -74,8 +84,10 @@ def inverse(s) -> np.ndarray:
     s = np.asarray(s, dtype=np.float64)
     if s.shape != (5, 5):
         raise ValueError(f"INVERSE is written for 5 x 5 matrices, got {s.shape}")
-    b = _f.inverse(np.asfortranarray(s))
-    if _f.inverr_get():
+    with FORTRAN_LOCK:
+        b = _f.inverse(np.asfortranarray(s))
+        singular = _f.inverr_get()
+    if singular:
         raise SingularPositionError("INVERSE: MATRIX IS SINGULAR")
     return b
 
@@ -100,8 +112,9 @@ def qprog(h, g, a=None, b=None, neq: int = 0) -> dict:
         raise ValueError("QPROG here holds at most 60 variables and 200 constraints")
     a_f = np.asfortranarray(np.vstack([a, np.zeros((1, n))]))        # LDA >= 1
     b_f = np.concatenate([b, [0.0]])
-    diag, sol, nact, iact, lam = _f.dqprog(b.size, neq, a_f, b_f, g, np.asfortranarray(h))
-    status = int(_f.qpstat_get())
+    with FORTRAN_LOCK:
+        diag, sol, nact, iact, lam = _f.dqprog(b.size, neq, a_f, b_f, g, np.asfortranarray(h))
+        status = int(_f.qpstat_get())
     if status == 1:
         raise QPError("QPROG: the constraints are inconsistent")
     if status == 2:

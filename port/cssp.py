@@ -19,7 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 import quadprog
 
-from ..errors import QPError
+from ..errors import QPError, SingularPositionError
 from .cssp_data import QP_EQUALITIES, QP_ROWS, Constants, CsspInputs
 from .cssp_listing import Carry, initial_estimate, listing_pass, unit_loads
 from .cssp_objective import UnitLoads, objective, position_forms, table_quantities
@@ -134,7 +134,11 @@ def balance(inputs: CsspInputs = CsspInputs(), quirks: CsspQuirks = CSSP_PRINTED
     quantities = [table_quantities(last.loads, x, quirks) for x in (before, after)]
     for table in TABLES[1:]:
         columns += [quantities[0][table], quantities[1][table]]
-    return {"table": np.stack(columns, axis=1), "inertia": _inertia_table(c, solutions[-1]),
+    table = np.stack(columns, axis=1)
+    bad = ~np.isfinite(table).all(axis=1)
+    if bad.any():
+        raise SingularPositionError("CSSP: a non-finite value in the tables", float(CRANK_DEG[np.argmax(bad)]))
+    return {"table": table, "inertia": _inertia_table(c, solutions[-1]),
             "solution": after, "solution_table51": solutions[-1], "hessian": first_qp[0],
             "diag": first_qp[1]}
 
