@@ -21,6 +21,7 @@ import threading
 
 import numpy as np
 
+from ..checks import finite_matrix
 from ..errors import ConvergenceError, QPError, SingularPositionError
 from . import _rahman1996 as _f
 
@@ -81,14 +82,14 @@ def inverse(s) -> np.ndarray:
 
     Raises ``SingularPositionError`` where the listing prints MATRIX IS SINGULAR and STOPs.
     """
-    s = np.asarray(s, dtype=np.float64)
-    if s.shape != (5, 5):
-        raise ValueError(f"INVERSE is written for 5 x 5 matrices, got {s.shape}")
+    s = finite_matrix("INVERSE's argument", s, (5, 5))
     with FORTRAN_LOCK:
         b = _f.inverse(np.asfortranarray(s))
         singular = _f.inverr_get()
     if singular:
         raise SingularPositionError("INVERSE: MATRIX IS SINGULAR")
+    if not np.all(np.isfinite(b)):
+        raise SingularPositionError("INVERSE: a pivot under- or overflowed (non-finite inverse)")
     return b
 
 

@@ -93,6 +93,7 @@ class Constants:
     rod_arms: tuple            # X2, Y2, Z2
     point_masses: np.ndarray   # the nine design variables before balancing (eq. 4.4)
     bearing_length_sq: float   # BL**2
+    a1_sq: float               # A1**2 (a REAL*4 square in the listing's C1, C2)
     qp_bounds: np.ndarray
     newton_tol: float          # the listing's 0.0000001
 
@@ -120,6 +121,7 @@ class Constants:
                    rod_radii_distal=tuple(s(k) for k in RADII_ROD_DISTAL), cg=CG_OFFSETS,
                    crank_arms=crank_arms, rod_arms=rod_arms, point_masses=point_masses,
                    bearing_length_sq=float(np.float32(bl) * np.float32(bl)) if real4 else bl * bl,
+                   a1_sq=float(np.float32(inputs.a1) * np.float32(inputs.a1)) if real4 else inputs.a1 ** 2,
                    qp_bounds=np.array([s(b) for b in QP_BOUNDS]), newton_tol=s(1e-7))
 
 

@@ -15,10 +15,14 @@ same answer); everything after it is vectorised.
 """
 from __future__ import annotations
 
+import ctypes
+import ctypes.util
+import math
 from dataclasses import dataclass
 
 import numpy as np
 
+from ..checks import finite_matrix
 from ..errors import ConvergenceError, SingularPositionError
 from . import spatial_newton as kernel
 from .cssp_data import Constants
@@ -79,12 +83,12 @@ def printed_inverse(s) -> np.ndarray:
     """The listing's INVERSE of a 5 x 5 matrix (D084): Gauss-Jordan without pivoting, rows
     exchanged only on an exactly zero pivot.  Raises SingularPositionError where the listing
     prints MATRIX IS SINGULAR and STOPs."""
-    s = np.asarray(s, dtype=float)
-    if s.shape != (5, 5):
-        raise ValueError(f"INVERSE is written for 5 x 5 matrices, got {s.shape}")
+    s = finite_matrix("INVERSE's argument", s, (5, 5))
     b, singular = kernel.listing_inverse(np.ascontiguousarray(s))
     if singular:
         raise SingularPositionError("INVERSE: MATRIX IS SINGULAR")
+    if not np.all(np.isfinite(b)):
+        raise SingularPositionError("INVERSE: a pivot under- or overflowed (non-finite inverse)")
     return b
 
 
@@ -108,13 +112,25 @@ def loop_operators(theta1, q: np.ndarray, c: Constants) -> tuple[DualMatrix, Dua
     return carry @ operators @ carry.T, h5 @ _m4(q[..., 4], c)
 
 
+def _powf(x: np.float32, y: float) -> float:
+    """x**y for REAL*4 x as gfortran evaluates it: the C library's powf (not sqrtf: glibc's
+    powf(x, 0.5) can differ from the correctly rounded root by one REAL*4 unit)."""
+    return float(_LIBM.powf(float(x), y))
+
+
+_LIBM = ctypes.CDLL(ctypes.util.find_library("m"))
+_LIBM.powf.restype, _LIBM.powf.argtypes = ctypes.c_float, [ctypes.c_float, ctypes.c_float]
+
+
 def initial_estimate(c: Constants, real4: bool) -> np.ndarray:
-    """The listing's start: s4 = sqrt(a2^2-(a1+a4)^2) (REAL*4), theta2 = pi - atan(s4/(a1+a4))."""
+    """The listing's start: S4=(A2**2-(A1+A4)**2)**0.5 (REAL*4), THT2=PI-ATAN(S4/(A4+A1)),
+    THT3=2*PI-THT2, ETA2 = ETA3 = 0; NaN where the root is not real (the Newton refuses it)."""
     kind = np.float32 if real4 else np.float64
     a1, a2, a4 = (kind(v) for v in (c.a1, c.a2, c.a4))
-    with np.errstate(invalid="ignore"):                   # not real: NaN, refused by the Newton
-        s4 = float(np.sqrt(a2 ** 2 - (a1 + a4) ** 2))
-    theta2 = c.pi - np.arctan(s4 / float(a4 + a1))       # A4+A1: a REAL*4 sum in the listing
+    with np.errstate(invalid="ignore", divide="ignore"):
+        square = a2 ** 2 - (a1 + a4) ** 2
+        s4 = _powf(square, 0.5) if real4 else float(square) ** 0.5 if square >= 0 else math.nan
+        theta2 = c.pi - np.arctan(np.float64(s4) / np.float64(a4 + a1))   # A4+A1: a REAL*4 sum, IEEE division
     return np.array([theta2, 0.0, 2.0 * c.pi - theta2, 0.0, s4])
 
 

@@ -38,8 +38,9 @@ def position_forms(loads: UnitLoads, c: Constants, quirks: CsspQuirks, positions
     ``positions`` is L of eq. (4.2) (the listing's 37, D070).  The listing leaves R4z
     out of R-bar (D065).
     """
-    c1 = positions * c.masses[0] ** 2 * c.a1 ** 2 * c.omega ** 4
-    c2, c3 = c1 * c.a1 ** 2, c1 * c.bearing_length_sq
+    w2 = c.omega * c.omega
+    c1 = positions * (c.masses[0] * c.masses[0]) * c.a1_sq * (w2 * w2)    # C1=37*(M1**2)*(A1**2)*(THT1D**4)
+    c2, c3 = c1 * c.a1_sq, c1 * c.bearing_length_sq
     reactions = _without_r4z(loads.reactions, quirks)
     return (_gram(loads.shaking_force) / c1 + _gram(loads.shaking_moment) / c2
             + sum(_gram(r) for r in reactions) / c1 + sum(_gram(m) for m in loads.moments) / c3

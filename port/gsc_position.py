@@ -28,7 +28,6 @@ from .cssp_data import Constants, CsspInputs
 from .cssp_listing import initial_estimate, loop_operators
 from .gsc_data import GscInputs
 
-NEWTON_TOL = 1e-7      # the 1996 program's limit on every |Delta| (in, rad)
 DFP_ITERATIONS = 400
 #: statuses of a position
 NEWTON, DFP_THEN_NEWTON, NOT_CONVERGED, CANNOT_ASSEMBLE = "newton", "dfp+newton", "not converged", "cannot assemble"
@@ -49,15 +48,29 @@ class PositionRun:
         return np.isin(self.status, [NEWTON, DFP_THEN_NEWTON])
 
 
-def constants(inputs: GscInputs, s1: float) -> Constants:
+@dataclass(frozen=True)
+class NewtonSetup:
+    """What the 1991 thesis leaves open and the 1996 build of the same Newton fixes."""
+    real4: bool = False            # lengths, pi and the tolerance 1e-7 as REAL*4 holds them
+    printed_inverse: bool = False  # A'A inverted by the 1996 listing's INVERSE, else by LU
+    check_assembly: bool = True    # skip the angles where the rod cannot reach the slider axis
+
+
+#: the port of the 1991 method (double precision, LU, assembly checked first)
+THESIS_1991 = NewtonSetup()
+#: the 1996 build's Newton (its first pass is the 1991 method in the 1996 program's arithmetic)
+BUILD_1996 = NewtonSetup(real4=True, printed_inverse=True, check_assembly=False)
+
+
+def constants(inputs: GscInputs, s1: float, real4: bool = False) -> Constants:
     """The 1996 port's constants for this geometry (its mass data are not used here)."""
-    return replace(_geometry_constants(inputs.a1, inputs.a2, inputs.a4, inputs.alpha4_deg, inputs.rpm),
-                   s1=float(s1))
+    geometry = _geometry_constants(inputs.a1, inputs.a2, inputs.a4, inputs.alpha4_deg, inputs.rpm, real4)
+    return replace(geometry, s1=float(np.float32(s1)) if real4 else float(s1))
 
 
 @functools.lru_cache(maxsize=256)
-def _geometry_constants(a1: float, a2: float, a4: float, alpha4_deg: float, rpm: float) -> Constants:
-    return Constants.of(CsspInputs(a1=a1, a2=a2, a4=a4, alpha4_deg=alpha4_deg, s1=1.0, rpm=rpm), False)
+def _geometry_constants(a1: float, a2: float, a4: float, alpha4_deg: float, rpm: float, real4: bool) -> Constants:
+    return Constants.of(CsspInputs(a1=a1, a2=a2, a4=a4, alpha4_deg=alpha4_deg, s1=1.0, rpm=rpm), real4)
 
 
 def assembles(inputs: GscInputs, theta1, s1) -> np.ndarray:
@@ -78,11 +91,12 @@ def residual(theta1: float, q: np.ndarray, c: Constants) -> tuple[np.ndarray, np
     return r, np.concatenate([hb.real.reshape(5, 9), hb.dual.reshape(5, 9)], axis=1).T
 
 
-def newton(theta1: float, q: np.ndarray, c: Constants) -> tuple[np.ndarray, bool, int]:
+def newton(theta1: float, q: np.ndarray, c: Constants, printed_inverse: bool = False) -> tuple[np.ndarray, bool, int]:
     """The printed iteration from q (5,) at one crank angle (rad): (answer, converged, steps).
-    A singular A'A or a non-finite step fails at once (the iteration cannot recover)."""
+    Every |Delta| <= c.newton_tol (1e-7) stops it, 150 steps fail it; a singular A'A or a
+    non-finite step fails at once (the iteration cannot recover)."""
     q, status, steps = kernel.newton(float(theta1), np.asarray(q, dtype=float), c.a1, c.a2, c.a4, c.alpha4,
-                                     c.s1, NEWTON_TOL, kernel.MAX_ITERATIONS, False)
+                                     c.s1, c.newton_tol, kernel.MAX_ITERATIONS, printed_inverse)
     return q, status == kernel.OK, int(steps)
 
 
@@ -114,7 +128,8 @@ def dfp(theta1: float, q: np.ndarray, c: Constants) -> np.ndarray:
     return q
 
 
-def positions(inputs: GscInputs, theta1, use_dfp: bool = True, stop_at_failure: bool = False) -> PositionRun:
+def positions(inputs: GscInputs, theta1, use_dfp: bool = True, stop_at_failure: bool = False,
+              setup: NewtonSetup = THESIS_1991) -> PositionRun:
     """Solve every crank angle theta1 (rad, in sweep order) by the printed method.
 
     A failed angle leaves the next one to start from the last answer, or
@@ -122,21 +137,23 @@ def positions(inputs: GscInputs, theta1, use_dfp: bool = True, stop_at_failure: 
     th = np.asarray(theta1, dtype=float)
     n = th.size
     s1 = inputs.axial(th)[0]
-    ok = assembles(inputs, th, s1)
+    ok = assembles(inputs, th, s1) if setup.check_assembly else np.ones(n, dtype=bool)
     q_out, closure = np.full((n, 5), np.nan), np.full(n, np.nan)
     status, steps = np.full(n, NOT_CONVERGED, dtype=object), np.zeros(n, dtype=int)
     status[~ok] = CANNOT_ASSEMBLE
-    guess = initial_estimate(constants(inputs, s1[0]), real4=False)
+    guess = initial_estimate(constants(inputs, s1[0], setup.real4), real4=setup.real4)
     with np.errstate(all="ignore"):
         for i in range(n):
             if not (ok[i] and np.all(np.isfinite(guess))):
+                if stop_at_failure and ok[i]:
+                    break
                 continue
-            c = constants(inputs, s1[i])
-            q, done, steps[i] = newton(th[i], guess, c)
+            c = constants(inputs, s1[i], setup.real4)
+            q, done, steps[i] = newton(th[i], guess, c, setup.printed_inverse)
             if done:
                 status[i] = NEWTON
             elif use_dfp and (i == 0 or status[i - 1] != NOT_CONVERGED):   # DFP only after a converged position
-                q, done, steps[i] = newton(th[i], dfp(th[i], guess, c), c)
+                q, done, steps[i] = newton(th[i], dfp(th[i], guess, c), c, setup.printed_inverse)
                 status[i] = DFP_THEN_NEWTON if done else NOT_CONVERGED
             if done:
                 q_out[i], guess = q, q
