@@ -1,50 +1,184 @@
-"""The ``linkrepro`` command."""
+"""The ``linkrepro`` command (``python -m linkrepro`` is the same).
+
+Exit status: 0 done; 1 a run failed (an engine could not run, gfortran missing or broken, an
+output file could not be written); 2 a usage error, as argparse (a bad argument, an unknown
+scene, an ``--out`` that cannot be written); 130 interrupted (Ctrl-C).
+
+A user's mistake or a missing tool is one line on stderr, ``linkrepro: error: ...``, raised as
+a typed error where it is found and caught here, in ``main``.  Anything else is a bug in
+linkrepro: it keeps its traceback, after one line that says so.
+"""
 from __future__ import annotations
 
 import argparse
+import difflib
+import os
 import sys
 from pathlib import Path
 
+PROG = "linkrepro"
 
-def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="linkrepro", description=(
-        "Rebuild, port and diff the FORTRAN of three mechanism-dynamics theses."))
-    sub = parser.add_subparsers(dest="command", required=True)
+
+class _Parser(argparse.ArgumentParser):
+    """argparse with every error on one line: ``linkrepro: error: ... (see `... --help`)``."""
+
+    def error(self, message: str):
+        self.exit(2, f"{PROG}: error: {message} (see `{self.prog} --help`)\n")
+
+
+class _ReaderGone(Exception):
+    """Whoever reads our standard output has gone (``linkrepro scenes | head -1``)."""
+
+
+def _error(message: str) -> None:
+    print(f"{PROG}: error: {message}", file=sys.stderr)
+
+
+def _out(text: str) -> None:
+    try:
+        print(text)
+        sys.stdout.flush()
+    except BrokenPipeError as exc:
+        raise _ReaderGone from exc
+
+
+def _out_folder(text: str) -> Path:
+    if not text.strip():
+        raise argparse.ArgumentTypeError("the output folder must not be empty")
+    return Path(text)
+
+
+def _repeat(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        value = 0
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"must be a whole number >= 1, not {text!r}")
+    return value
+
+
+def _parser() -> tuple[_Parser, dict[str, _Parser]]:
+    parser = _Parser(prog=PROG, description=(
+        "Rebuild, port and diff the FORTRAN of three mechanism-dynamics theses."),
+        epilog="Exit status: 0 done, 1 a run failed, 2 a usage error, 130 interrupted.")
+    sub = parser.add_subparsers(dest="command", required=True, metavar="{reproduce,scenes,bench}")
     rep = sub.add_parser("reproduce", help="run every engine of the scenes and write the report")
     rep.add_argument("scenes", nargs="*", help="scene names (default: all; see `linkrepro scenes`)")
-    rep.add_argument("--out", default="out", type=Path, help="output folder (default: out/)")
-    sub.add_parser("scenes", help="list the scenes")
+    rep.add_argument("--out", default=Path("out"), type=_out_folder,
+                     help="output folder (default: out/); checked writable before the run starts")
+    rep.add_argument("--skip-readings", action="store_true",
+                     help="do not measure the OCR readings (they rebuild printed listings with gfortran)")
+    scenes = sub.add_parser("scenes", help="list the scenes")
     bench = sub.add_parser("bench", help="time each engine against its error")
-    bench.add_argument("--repeat", type=int, default=20, help="timing repetitions (best of)")
-    args = parser.parse_args(argv)
+    bench.add_argument("--repeat", type=_repeat, default=20, help="timing repetitions, >= 1 (best of)")
+    return parser, {"reproduce": rep, "scenes": scenes, "bench": bench}
 
+
+def _scene_titles() -> dict[str, str]:
+    """Every scene `reproduce` knows, with its title."""
+    from . import appendix, rahman1991, rahman1996_figures
     from .scenes import SCENES
+    titles = {scene.name: scene.title for scene in SCENES.values()}
+    titles[appendix.NAME] = f"{appendix.TITLE} (engine against engine)"
+    titles[rahman1996_figures.NAME] = "Rahman (1996) Figures 5.1-5.6 and the section 5.3 percentages"
+    titles[rahman1991.NAME] = rahman1991.TITLE
+    return titles
+
+
+def _unknown_scenes(unknown: list[str], known: list[str]) -> str:
+    hints = [f"{name!r} (did you mean {close[0]!r}?)" if (close := difflib.get_close_matches(name, known, 1))
+             else repr(name) for name in unknown]
+    return (f"unknown scene{'s' if len(unknown) > 1 else ''} {', '.join(hints)}; "
+            f"`linkrepro scenes` lists them: {', '.join(known)}")
+
+
+def _under(exc: OSError, folder: Path) -> bool:
+    """Whether an OSError is about a file in the output folder (a write that failed)."""
+    try:
+        root = folder.resolve()
+        return any(name is not None and Path(name).resolve().is_relative_to(root)
+                   for name in (exc.filename, exc.filename2))
+    except (OSError, ValueError, TypeError):
+        return False
+
+
+def _summary(done: list[dict], out_dir: Path) -> None:
+    from .run import unexplained_count
+    for item in done:
+        _out(f"{item['scene']}:\n{item['counts'].to_string()}")
+    _out(f"report: {out_dir / 'report.md'}  ({unexplained_count(done)} unexplained cells)")
+
+
+def _reproduce(args: argparse.Namespace, parser: _Parser) -> int:
+    known = list(_scene_titles())
+    unknown = [name for name in dict.fromkeys(args.scenes) if name not in known]
+    if unknown:
+        parser.error(_unknown_scenes(unknown, known))
+    from .engines import PrintedProgramError
+    from .readings import CompilerError
+    from .run import OutputFolderError, RunFailedError, reproduce
+    try:
+        done = reproduce(args.scenes, args.out, measure_readings=not args.skip_readings)
+    except OutputFolderError as exc:          # found before the run: the --out argument is wrong
+        _error(f"{exc} (--out)")
+        return 2
+    except RunFailedError as exc:             # the run finished, but an engine could not run
+        _summary(exc.done, args.out)
+        _error(str(exc))
+        return 1
+    except (CompilerError, PrintedProgramError) as exc:
+        _error(str(exc))
+        return 1
+    except OSError as exc:
+        if not _under(exc, args.out):
+            raise
+        _error(f"could not write {exc.filename}: {exc.strerror or exc}")
+        return 1
+    _summary(done, args.out)
+    return 0
+
+
+def _main(argv: list[str] | None) -> int:
+    parser, commands = _parser()
+    args = parser.parse_args(argv)
     if args.command == "scenes":
-        from . import appendix, rahman1991, rahman1996_figures
-        for scene in SCENES.values():
-            print(f"{scene.name:22s} {scene.title}")
-        print(f"{appendix.NAME:22s} {appendix.TITLE} (engine against engine)")
-        print(f"{rahman1996_figures.NAME:22s} Rahman (1996) Figures 5.1-5.6 and the section 5.3 percentages")
-        print(f"{rahman1991.NAME:22s} {rahman1991.TITLE}")
+        _out("\n".join(f"{name:22s} {title}" for name, title in _scene_titles().items()))
         return 0
     if args.command == "reproduce":
-        from .run import reproduce, unexplained_count
-        from . import appendix, rahman1991, rahman1996_figures
-        extra = [appendix.NAME, rahman1996_figures.NAME, rahman1991.NAME]
-        unknown = [s for s in args.scenes if s not in SCENES and s not in extra]
-        if unknown:
-            parser.error(f"unknown scene(s): {', '.join(unknown)}; known: {', '.join([*SCENES, *extra])}")
-        done = reproduce(args.scenes, args.out)
-        for item in done:
-            print(f"{item['scene']}:")
-            print(item["counts"].to_string())
-        print(f"report: {args.out / 'report.md'}  ({unexplained_count(done)} unexplained cells)")
-        return 0
+        return _reproduce(args, commands["reproduce"])
     if args.command == "bench":
         from .bench import run_bench
-        print(run_bench(args.repeat))
+        from .engines import PrintedProgramError
+        try:
+            text = run_bench(args.repeat)
+        except PrintedProgramError as exc:
+            _error(str(exc))
+            return 1
+        _out(text)
         return 0
-    return 2
+    raise AssertionError(f"command {args.command!r} has no branch")
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Run the command; return its exit status (argparse's ``SystemExit`` for --help and
+    usage errors passes through, as argparse does)."""
+    try:
+        return _main(argv)
+    except KeyboardInterrupt:
+        print(f"{PROG}: interrupted", file=sys.stderr)
+        return 130
+    except _ReaderGone:
+        try:                                  # stop Python's final flush complaining too
+            os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        except OSError:
+            pass
+        return 1
+    except Exception as exc:
+        first = (str(exc).strip().splitlines() or [""])[0]
+        print(f"{PROG}: internal error, a bug in linkrepro (please report it with the traceback below): "
+              f"{type(exc).__name__}: {first}", file=sys.stderr)
+        raise
 
 
 if __name__ == "__main__":

@@ -4,7 +4,11 @@ For every register entry with ``[[deviation.reading]]`` items, the printed
 listing is rebuilt with the scan's literal text put back, compiled with gfortran
 like the printed engine, run, and its deflection columns compared with the
 published table.  This is the measured evidence behind each uncertain reading.
-Needs gfortran on PATH; without it the measurement is skipped and says so.
+Needs gfortran on PATH: without it (or when it cannot build the listing as printed)
+``measure`` raises ``CompilerError``; ``linkrepro reproduce`` checks for it before
+the run starts (``require_compiler``) and skips the measurement only when asked to
+(``--skip-readings``).  Without the source tree's listings it is skipped, and the
+report says so.
 """
 from __future__ import annotations
 
@@ -29,6 +33,59 @@ COLUMNS = {"ali1977_case1_source.f": ("ali1977_table1", ("src_dx", "src_dy")),
            "ali1977_case2_source.f": ("ali1977_table2", ("src_dx", "src_dy")),
            "ali1977_case3_source.f": ("ali1977_table3", ("src_dx", "src_dy"))}
 SSP = ["ssp_gmtra.f", "ssp_mprd.f", "ssp_loc.f"]
+COMPILER = "gfortran"
+COMPILE_TIMEOUT_S = 120
+
+
+class CompilerError(RuntimeError):
+    """gfortran is missing or cannot build a printed listing as printed."""
+
+
+def _entries() -> list[dict]:
+    with open(REGISTER_PATH, "rb") as fh:
+        return tomllib.load(fh).get("deviation", [])
+
+
+def _table_of(entry: dict) -> str | None:
+    readings = entry.get("reading", [])
+    return COLUMNS.get(readings[0]["file"], (None,))[0] if readings else None
+
+
+def has_readings(table: str) -> bool:
+    """Whether the register has reading alternatives measured against this published table."""
+    return any(_table_of(entry) == table for entry in _entries())
+
+
+def require_compiler(scenes: dict[str, str]) -> None:
+    """Raise ``CompilerError`` now, before a long run, if measuring the readings of these
+    scenes (name: published table) will need gfortran and it is not on PATH."""
+    needing = [name for name, table in scenes.items() if has_readings(table)]
+    if needing and _printed_dir() is not None and shutil.which(COMPILER) is None:
+        raise CompilerError(_missing_message(needing))
+
+
+def _missing_message(names: list[str]) -> str:
+    return (f"{COMPILER} is not on PATH; it rebuilds the printed listings with the scan's literal text "
+            f"to measure the OCR readings of {', '.join(names)}: install it (apt-get install {COMPILER}) "
+            "or pass --skip-readings")
+
+
+def _first_error(stderr: str) -> str:
+    """The line of a compiler's messages that says what went wrong."""
+    lines = [line.strip() for line in stderr.splitlines() if line.strip()]
+    return next((line for line in lines if "error" in line.lower()), lines[-1] if lines else "no message")
+
+
+def _compile(src: Path, exe: Path) -> None:
+    """Build one listing as the printed engine is built.  ``CalledProcessError``: the text
+    does not compile (a scan's literal text may not); ``CompilerError``: gfortran cannot run."""
+    try:
+        subprocess.run([COMPILER, *FLAGS, "-o", str(exe), str(src), *[str(PRINTED_DIR / s) for s in SSP]],
+                       check=True, capture_output=True, text=True, timeout=COMPILE_TIMEOUT_S)
+    except subprocess.TimeoutExpired as exc:
+        raise CompilerError(f"{COMPILER} did not finish building {src.name} in {COMPILE_TIMEOUT_S} s") from exc
+    except OSError as exc:                 # not on PATH any more, not executable, ...
+        raise CompilerError(f"{COMPILER} could not be run: {exc.strerror or exc}") from exc
 
 
 def _printed_dir() -> Path | None:
@@ -47,8 +104,7 @@ def _run_variant(program: str, edits: list[dict], workdir: Path) -> pd.DataFrame
     src = workdir / program
     src.write_text(text)
     exe = workdir / "variant"
-    subprocess.run(["gfortran", *FLAGS, "-o", str(exe), str(src), *[str(PRINTED_DIR / s) for s in SSP]],
-                   check=True, capture_output=True, timeout=120)
+    _compile(src, exe)
     done = subprocess.run([str(exe)], capture_output=True, text=True, timeout=60)
     return parse_printed_output(done.stdout).drop_duplicates("deg").set_index("deg")
 
@@ -69,26 +125,29 @@ def _matched(frame: pd.DataFrame, program: str, published: PublishedTable) -> tu
 
 def measure(table: str = "ali1977_table1") -> pd.DataFrame:
     """One row per reading: cells matched with the chosen text and with the scan's."""
-    if shutil.which("gfortran") is None or _printed_dir() is None:
+    entries = [entry for entry in _entries() if _table_of(entry) == table]
+    if not entries or _printed_dir() is None:
         return pd.DataFrame()
-    with open(REGISTER_PATH, "rb") as fh:
-        entries = tomllib.load(fh).get("deviation", [])
+    if shutil.which(COMPILER) is None:
+        raise CompilerError(_missing_message([table]))
     published = PublishedTable.load(table)
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
         baselines = {}
         for entry in entries:
-            readings = entry.get("reading", [])
-            if not readings or COLUMNS.get(readings[0]["file"], ("",))[0] != table:
-                continue
+            readings = entry["reading"]
             program = readings[0]["file"]
             if program not in baselines:
-                baselines[program] = _matched(_run_variant(program, [], tmp), program, published)
+                try:
+                    baselines[program] = _matched(_run_variant(program, [], tmp), program, published)
+                except subprocess.CalledProcessError as exc:   # the listing as printed builds with meson
+                    raise CompilerError(f"{COMPILER} could not build the printed listing {program} as printed "
+                                        f"({_first_error(exc.stderr)}); check the {COMPILER} installation") from exc
             try:
                 scan = _matched(_run_variant(program, readings, tmp), program, published)
-            except subprocess.CalledProcessError:
-                scan = (0, baselines[program][1], float("nan"))
+            except (subprocess.CalledProcessError, subprocess.TimeoutExpired):
+                scan = (0, baselines[program][1], float("nan"))   # the scan's text does not build or run
             chosen = baselines[program]
             rows.append({"id": entry["id"], "program": program,
                          "chosen_matched": f"{chosen[0]}/{chosen[1]}", "chosen_max_err": chosen[2],

@@ -1,6 +1,7 @@
 """``linkrepro reproduce``: run every engine of each scene, diff, write the report."""
 from __future__ import annotations
 
+import tempfile
 import time
 from pathlib import Path
 
@@ -13,9 +14,55 @@ from .published_tables import PublishedTable
 from .report import plot_scene, scene_report
 from .scenes import SCENES, get
 
+SPECIAL = (appendix.NAME, rahman1996_figures.NAME, rahman1991.NAME)
+
+
+class OutputFolderError(OSError):
+    """The output folder cannot be created or written to (found before the run starts)."""
+
+
+class RunFailedError(RuntimeError):
+    """The run finished, but an engine could not run (a printed program missing, ...).
+    Everything else was written; ``failures`` lists what failed, ``done`` the scenes' summaries."""
+
+    def __init__(self, failures: list[str], done: list[dict], out_dir: Path):
+        self.failures, self.done = failures, done
+        more = f"; {len(failures)} failures in all" if len(failures) > 1 else ""
+        super().__init__(f"{failures[0]} (the other results are written{more}: see {out_dir / 'report.md'})")
+
+
+def check_output_folder(out_dir: Path, names: list[str], convergence: bool = False) -> None:
+    """Create ``out_dir`` and prove it writable (a probe file written and removed), and check
+    that nothing the run writes at its top level is in the way: before any work is done, so
+    that a bad ``--out`` fails at once and not after minutes.  ``OutputFolderError`` if not."""
+    out_dir = Path(out_dir)
+    try:
+        out_dir.mkdir(parents=True, exist_ok=True)
+    except FileExistsError as exc:
+        raise OutputFolderError(f"output folder {out_dir} is a file, not a folder") from exc
+    except NotADirectoryError as exc:
+        raise OutputFolderError(f"cannot create output folder {out_dir}: a part of that path is a file, "
+                                "not a folder") from exc
+    except OSError as exc:
+        raise OutputFolderError(f"cannot create output folder {out_dir}: {exc.strerror or exc}") from exc
+    try:
+        with tempfile.NamedTemporaryFile(dir=out_dir, prefix=".linkrepro-write-check-"):
+            pass
+    except OSError as exc:
+        raise OutputFolderError(f"cannot write to output folder {out_dir}: {exc.strerror or exc}") from exc
+    for name in names:
+        if (out_dir / name).exists() and not (out_dir / name).is_dir():
+            raise OutputFolderError(f"{out_dir / name} is a file; the run writes the scene's folder there")
+    files = ["report.md"] + ([f"case3_convergence.{ext}" for ext in ("csv", "png", "md")] if convergence else [])
+    for name in files:
+        if (out_dir / name).is_dir():
+            raise OutputFolderError(f"{out_dir / name} is a folder; the run writes a file there")
+
 
 def run_scene(name: str, out_dir: Path, measure_readings: bool = True) -> dict:
-    """Run one scene; write DIR/<scene>/...; return its summary counts and timings."""
+    """Run one scene; write DIR/<scene>/...; return its summary counts and timings.  An
+    engine that cannot run (``PrintedProgramError``) is listed in ``failures`` and in the
+    scene's report; the other engines still run."""
     scene = get(name)
     register = register_mod.load()
     published = PublishedTable.load(scene.table)
@@ -39,26 +86,44 @@ def run_scene(name: str, out_dir: Path, measure_readings: bool = True) -> dict:
     diff.to_csv(target / "diff.csv", index=False, float_format="%.9g")
     plots = plot_scene(scene, published, results, target)
     extra = "\n".join(f"**{f}**" for f in failures)
-    measured = readings.measure(scene.table) if measure_readings else None
-    if measured is not None and not measured.empty:
-        extra += "\n\n" + readings.as_markdown(measured)
+    if readings.has_readings(scene.table):     # an empty measurement says why it is empty
+        extra += "\n\n" + (readings.as_markdown(readings.measure(scene.table)) if measure_readings else
+                           "## Reading alternatives\n\nNot measured (skipped on request: --skip-readings).")
     (target / "report.md").write_text(scene_report(scene, diff, timings, register, plots, extra))
     return {"scene": scene.name, "title": scene.title, "counts": summary(diff), "timings": timings,
             "failures": failures}
 
 
-def reproduce(names: list[str] | None, out_dir: Path) -> list[dict]:
+def reproduce(names: list[str] | None, out_dir: Path, measure_readings: bool = True) -> list[dict]:
     """Run the named scenes (all by default) and write DIR/report.md over them; with all
-    scenes (or ali1977-table3) also the Case III speed-against-error sweep."""
+    scenes (or ali1977-table3) also the Case III speed-against-error sweep.
+
+    Before any work: ``OutputFolderError`` if DIR cannot be written, ``readings.CompilerError``
+    if the OCR readings need gfortran and it is missing (``measure_readings=False`` skips
+    them).  After the run, if an engine could not run: ``RunFailedError`` (everything else
+    is written, the failures are in the reports)."""
     measure_convergence = not names or "ali1977-table3" in names
-    special = (appendix.NAME, rahman1996_figures.NAME, rahman1991.NAME)
-    names = names or list(SCENES) + list(special)
-    out_dir.mkdir(parents=True, exist_ok=True)
+    names = list(dict.fromkeys(names or list(SCENES) + list(SPECIAL)))
+    out_dir = Path(out_dir)
+    check_output_folder(out_dir, names, measure_convergence)
+    if measure_readings:
+        readings.require_compiler({name: get(name).table for name in names if name not in SPECIAL})
     start = time.perf_counter()
-    done = [run_scene(name, out_dir) for name in names if name not in special]
-    curves = appendix.run(out_dir) if appendix.NAME in names else None
-    figures = rahman1996_figures.run(out_dir) if rahman1996_figures.NAME in names else None
-    example = rahman1991.run(out_dir) if rahman1991.NAME in names else None
+    done = [run_scene(name, out_dir, measure_readings) for name in names if name not in SPECIAL]
+    failures = [f"{item['scene']}: {failure}" for item in done for failure in item["failures"]]
+
+    def run_special(module):
+        if module.NAME not in names:
+            return None
+        try:
+            return module.run(out_dir)
+        except PrintedProgramError as exc:
+            failures.append(f"{module.NAME}: not written, engine printed failed: {exc}")
+            return None
+
+    curves = run_special(appendix)
+    figures = run_special(rahman1996_figures)
+    example = run_special(rahman1991)
     total = time.perf_counter() - start
     lines = ["# linkrepro: reproduction report", "",
              "Each published cell, for each engine: `match` (within half a unit of the printed last "
@@ -97,8 +162,12 @@ def reproduce(names: list[str] | None, out_dir: Path) -> list[dict]:
                   "| engine | " + " | ".join(verdicts.columns) + " |", "|---|" + "---|" * len(verdicts.columns)]
         lines += [f"| {engine} | " + " | ".join(str(v) for v in row) + " |" for engine, row in verdicts.iterrows()]
         lines.append("")
+    if failures:
+        lines += ["## Failures", "", *[f"- **{failure}**" for failure in failures], ""]
     lines.append(f"Total wall time of this reproduce run: {total:.2f} s.")
     (out_dir / "report.md").write_text("\n".join(lines) + "\n")
+    if failures:
+        raise RunFailedError(failures, done, out_dir)
     return done
 
 

@@ -1,6 +1,8 @@
-"""``python -m linkrepro``: the same as the ``linkrepro`` command."""
+"""``python -m linkrepro``: the same as the ``linkrepro`` command (same arguments, output and
+exit status)."""
 import sys
 
 from .harness.cli import main
 
-sys.exit(main())
+if __name__ == "__main__":
+    sys.exit(main())
