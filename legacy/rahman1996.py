@@ -21,7 +21,7 @@ import threading
 
 import numpy as np
 
-from ..checks import finite_matrix
+from ..checks import finite_matrix, qp_arguments
 from ..errors import ConvergenceError, QPError, SingularPositionError
 from . import _rahman1996 as _f
 
@@ -100,17 +100,8 @@ def qprog(h, g, a=None, b=None, neq: int = 0) -> dict:
     Returns ``sol``, ``diag`` (the multiple of the identity added to H, 0 when H is
     positive definite), ``active`` (0-based constraint indices) and ``multipliers``.
     """
-    h = np.asarray(h, dtype=np.float64)
-    g = np.asarray(g, dtype=np.float64).ravel()
+    h, g, a, b, neq = qp_arguments(h, g, a, b, neq, 60, 200)
     n = g.size
-    if h.shape != (n, n) or not (np.all(np.isfinite(h)) and np.all(np.isfinite(g))):
-        raise ValueError("h must be a finite n x n matrix and g a finite n-vector")
-    a = np.zeros((0, n)) if a is None else np.atleast_2d(np.asarray(a, dtype=np.float64))
-    b = np.zeros(0) if b is None else np.asarray(b, dtype=np.float64).ravel()
-    if a.shape[1] != n or a.shape[0] != b.size or not 0 <= neq <= b.size:
-        raise ValueError("a must be m x n with b of length m, and 0 <= neq <= m")
-    if n > 60 or b.size > 200:
-        raise ValueError("QPROG here holds at most 60 variables and 200 constraints")
     a_f = np.asfortranarray(np.vstack([a, np.zeros((1, n))]))        # LDA >= 1
     b_f = np.concatenate([b, [0.0]])
     with FORTRAN_LOCK:
@@ -122,4 +113,6 @@ def qprog(h, g, a=None, b=None, neq: int = 0) -> dict:
         raise QPError("QPROG: iteration limit reached")
     if status == 3:
         raise ValueError("QPROG: bad arguments")
+    if not (np.all(np.isfinite(sol)) and np.all(np.isfinite(lam[:nact]))):
+        raise QPError("QPROG: the solution is not finite (the arithmetic overflowed)")
     return {"sol": sol, "diag": float(diag), "active": iact[:nact] - 1, "multipliers": lam[:nact]}

@@ -5,14 +5,41 @@ from __future__ import annotations
 import numpy as np
 
 
-def finite_matrix(name: str, value, shape: tuple[int, int]) -> np.ndarray:
-    """``value`` as a finite float64 matrix of the given shape."""
+def finite_matrix(name: str, value, shape: tuple[int, int] | None = None) -> np.ndarray:
+    """``value`` as a finite float64 matrix of the given shape (None: any non-empty square)."""
+    wanted = f"a {shape[0]} x {shape[1]} matrix" if shape else "a non-empty square matrix"
     try:
         matrix = np.asarray(value, dtype=np.float64)
     except (TypeError, ValueError) as exc:
-        raise TypeError(f"{name} must be a {shape[0]} x {shape[1]} matrix of numbers ({exc})") from None
-    if matrix.shape != shape:
-        raise ValueError(f"{name} must be a {shape[0]} x {shape[1]} matrix, got shape {matrix.shape}")
+        raise TypeError(f"{name} must be {wanted} of numbers ({exc})") from None
+    square = matrix.ndim == 2 and matrix.shape[0] == matrix.shape[1] and matrix.size > 0
+    if (matrix.shape != shape) if shape else not square:
+        raise ValueError(f"{name} must be {wanted}, got shape {matrix.shape}")
     if not np.all(np.isfinite(matrix)):
         raise ValueError(f"{name} must be finite")
     return matrix
+
+
+def qp_arguments(h, g, a, b, neq, max_variables: int, max_constraints: int):
+    """QPROG's arguments (minimize g'x + x'Hx/2 s.t. a[:neq] x = b[:neq], a[neq:] x >= b[neq:])
+    as finite float64 arrays: (h, g, a, b, neq); ValueError/TypeError otherwise."""
+    try:
+        g = np.asarray(g, dtype=np.float64).ravel()
+        h = np.asarray(h, dtype=np.float64)
+        a = np.zeros((0, g.size)) if a is None else np.atleast_2d(np.asarray(a, dtype=np.float64))
+        b = np.zeros(0) if b is None else np.asarray(b, dtype=np.float64).ravel()
+    except (TypeError, ValueError) as exc:
+        raise TypeError(f"QPROG needs arrays of numbers ({exc})") from None
+    n = g.size
+    if n == 0 or h.shape != (n, n):
+        raise ValueError(f"h must be an n x n matrix and g an n-vector with n >= 1, got {h.shape} and {n}")
+    if a.ndim != 2 or a.shape[1] != n or a.shape[0] != b.size:
+        raise ValueError(f"a must be m x {n} with b of length m, got {a.shape} and {b.size}")
+    if isinstance(neq, bool) or not float(neq).is_integer() or not 0 <= neq <= b.size:
+        raise ValueError(f"neq must be an integer from 0 to {b.size}, got {neq!r}")
+    if n > max_variables or b.size > max_constraints:
+        raise ValueError(f"QPROG holds at most {max_variables} variables and {max_constraints} constraints")
+    for name, value in (("h", h), ("g", g), ("a", a), ("b", b)):
+        if not np.all(np.isfinite(value)):
+            raise ValueError(f"{name} must be finite")
+    return h, g, a, b, int(neq)

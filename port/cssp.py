@@ -5,10 +5,11 @@ closed-loop model: ``CsspQuirks.open_loop_model``), the objective of eq. (4.3) s
 the cycle, the quadratic program of section 4.4 for the nine point masses, and the
 quantities of Tables 5.1-5.7 before (equal point masses) and after (the QP's masses).
 
-The QP is solved by the ``quadprog`` package (Goldfarb-Idnani, the method of IMSL's QPROG).
-Its Hessian is singular here (the split of the crank's three pair masses enters nothing,
-register D057), so, as IMSL documents for QPROG, H + DIAG*I is used with DIAG the smallest
-shift our FORTRAN stand-in finds by raising Cholesky pivots (``hessian_shift``).
+The QP is solved by the port of our QPROG stand-in (``port/qprog.py``: Goldfarb-Idnani, the
+method of IMSL's QPROG, equal to the legacy build bit for bit).  Its Hessian is singular here
+(the split of the crank's three pair masses enters nothing, register D057), so, as IMSL
+documents for QPROG, H + DIAG*I is used with DIAG the smallest shift found by raising
+Cholesky pivots (``hessian_shift``).
 
 Units: inch, lbf, second, lb*s^2/in; crank angles in degrees at the interface.
 """
@@ -17,9 +18,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import quadprog
 
 from ..errors import QPError, SingularPositionError
+from . import qprog
 from .cssp_data import QP_EQUALITIES, QP_ROWS, Constants, CsspInputs
 from .cssp_listing import Carry, initial_estimate, listing_pass, unit_loads
 from .cssp_objective import UnitLoads, objective, position_forms, table_quantities
@@ -37,40 +38,28 @@ def hessian_shift(h: np.ndarray) -> float:
     """DIAG: the multiple of I that makes H positive definite, by our QPROG's rule (D050).
 
     Cholesky pivot by pivot; a pivot below sqrt(eps)*max|H_ii| raises DIAG by the
-    shortfall and restarts.  0 for a positive definite H.
+    shortfall and restarts.  0 for a positive definite H.  The rule is port/qprog.py's,
+    operation for operation the FORTRAN's.
     """
-    n = len(h)
-    scale = np.max(np.abs(np.diag(h))) or 1.0
-    tiny, diag = np.sqrt(np.finfo(float).eps) * scale, 0.0
-    while True:
-        low = np.zeros_like(h)
-        for j in range(n):
-            pivot = h[j, j] + diag - low[j, :j] @ low[j, :j]
-            if pivot < tiny:
-                diag += tiny - pivot
-                break
-            low[j, j] = np.sqrt(pivot)
-            low[j + 1:, j] = (h[j + 1:, j] - low[j + 1:, :j] @ low[j, :j]) / low[j, j]
-        else:
-            return diag
+    return qprog.hessian_shift(h)
 
 
 def solve_qp(h: np.ndarray, rows: np.ndarray = QP_ROWS, bounds=None, equalities: int = QP_EQUALITIES):
     """min x'Hx/2 s.t. the first ``equalities`` rows x = bounds, the rest x >= bounds.
 
-    Returns (x, diag).  Raises QPError when the QP has no solution (inconsistent
-    constraints) or H is not finite.
+    Solved by the port of our QPROG (port/qprog.py, equal to the legacy build bit for bit)
+    on H + DIAG*I.  Returns (x, diag).  Raises QPError when the QP has no solution
+    (inconsistent constraints, QPROG's iteration limit, a stalled DIAG rule) or H is
+    not finite.
     """
     h = np.asarray(h, dtype=float)
     if not np.all(np.isfinite(h)):
         raise QPError("the balancing QP has a non-finite Hessian")
-    diag = hessian_shift(h)
     try:
-        x = quadprog.solve_qp(h + diag * np.eye(len(h)), np.zeros(len(h)), rows.T,
-                              np.asarray(bounds, float), equalities)[0]
-    except ValueError as exc:
+        res = qprog.qprog(h, np.zeros(len(h)), rows, np.asarray(bounds, float), equalities)
+    except QPError as exc:
         raise QPError(f"the balancing QP has no solution: {exc}") from exc
-    return x, diag
+    return res["sol"], res["diag"]
 
 
 @dataclass

@@ -1,1 +1,323 @@
-"""Placeholder: the port of our QPROG stand-in (issue 11, in progress)."""
+"""Our QPROG stand-in (legacy/src/imsl_qprog.f, DQPROG; register D050), ported: ``qprog``.
+
+Minimises g'x + x'Hx/2 subject to a[:neq] x = b[:neq] and a[neq:] x >= b[neq:] by the
+Goldfarb-Idnani dual active-set method as DQPROG writes it.  If H is not positive definite,
+H + DIAG*I is used, DIAG found by raising Cholesky pivots (``hessian_shift``, the DIAG rule:
+a pivot below sqrt(eps)*max|H_ii| raises DIAG by the shortfall and the factorization
+restarts).  Only the diagonal and the lower triangle of H are read, as in the FORTRAN.
+
+Every operation is DQPROG's (with QPCHSL and QPGAUS) in DQPROG's order: sums run in the
+FORTRAN's loop order from the same start, the comparisons and tolerances are its own, MAX
+and MIN pick what gfortran's maxsd/minsd pick, and numba compiles without fastmath (no
+fused multiply-add, as the FORTRAN is built with -ffp-contract=off).  The result equals
+``linkrepro.legacy.rahman1996.qprog`` bit for bit (tests/test_differential_qprog.py).
+
+Two faults of the stand-in, found by tests/test_differential_qprog.py, are mended in the
+FORTRAN and here alike (register D050): where raising DIAG by the shortfall would not change
+it in floating point (a negative H_jj, e.g. H = diag(-1.3, 5.3)), DIAG takes the next number
+up (the FORTRAN repeated GO TO 100 forever); and the active set can hold one more
+constraint than there are variables (a numerically dependent one, before QPGAUS finds M
+singular), for which GN, M and RHS now have room (at 60 variables the FORTRAN wrote out of
+bounds).  Non-finite a, b, h or g are ValueError and a non-finite solution (overflow) is
+QPError, in both faces (``linkrepro.checks``).
+
+Units are the caller's; in the CSSP balancing problem x holds the nine point masses
+(lb*s^2/in) and H is twice the objective's quadratic form summed over the cycle.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from ..checks import finite_matrix, qp_arguments
+from ..errors import QPError
+
+#: DQPROG's PARAMETERs: at most 60 variables and 200 constraints
+MAXV, MAXC = 60, 200
+#: status codes, COMMON /QPSTAT/
+SOLVED, INCONSISTENT, ITERATION_LIMIT, BAD_ARGUMENTS = 0, 1, 2, 3
+#: EPSILON(1.0D0)
+EPS = float(np.finfo(np.float64).eps)
+
+
+@njit(cache=True)
+def _max(a, b):
+    """gfortran's MAX as compiled here (maxsd): a if a > b else b."""
+    return a if a > b else b
+
+
+@njit(cache=True)
+def _cholesky_shift(h, low):
+    """Statements 5-130: L L' = H + DIAG*I, raising DIAG where a pivot falls below TINY.
+
+    Fills ``low`` (L, lower triangle) and returns DIAG.  A shortfall below DIAG's last bit
+    takes the next number up (DNEW = NEAREST(DIAG, 1.0D0)).
+    """
+    n = h.shape[0]
+    scale = 0.0
+    for i in range(n):                                    # DO 5
+        scale = _max(scale, abs(h[i, i]))
+    if scale == 0.0:
+        scale = 1.0
+    tiny = math.sqrt(EPS) * scale
+    diag = 0.0
+    while True:                                           # 100 CONTINUE
+        restart = False
+        for j in range(n):                                # DO 130
+            pivot = h[j, j] + diag
+            for k in range(j):                            # DO 110: - L(J,K)**2
+                pivot = pivot - low[j, k] * low[j, k]
+            if pivot < tiny:
+                raised = diag + (tiny - pivot)
+                if raised <= diag:
+                    raised = np.nextafter(diag, np.inf)
+                diag = raised
+                restart = True
+                break                                     # GO TO 100
+            low[j, j] = math.sqrt(pivot)
+            for i in range(j + 1, n):                     # DO 125
+                s = h[i, j]
+                for k in range(j):                        # DO 120
+                    s = s - low[i, k] * low[j, k]
+                low[i, j] = s / low[j, j]
+        if not restart:
+            return diag
+
+
+@njit(cache=True)
+def _chsl(low, rhs, x):
+    """QPCHSL: solve (L L') X = RHS, forward then backward substitution."""
+    n = low.shape[0]
+    for i in range(n):                                    # DO 20
+        s = rhs[i]
+        for k in range(i):                                # DO 10
+            s = s - low[i, k] * x[k]
+        x[i] = s / low[i, i]
+    for i in range(n - 1, -1, -1):                        # DO 40
+        s = x[i]
+        for k in range(i + 1, n):                         # DO 30
+            s = s - low[k, i] * x[k]
+        x[i] = s / low[i, i]
+
+
+@njit(cache=True)
+def _gaus(n, m, rhs, x):
+    """QPGAUS: solve M X = RHS (first n rows and columns) by Gaussian elimination with
+    partial pivoting; M and RHS are overwritten.  Returns INFO: 1 if M is singular."""
+    big = 0.0
+    for i in range(n):                                    # DO 5
+        for j in range(n):                                # DO 4
+            big = _max(big, abs(m[i, j]))
+    for k in range(n):                                    # DO 40
+        ip = k
+        for i in range(k + 1, n):                         # DO 10
+            if abs(m[i, k]) > abs(m[ip, k]):
+                ip = i
+        if abs(m[ip, k]) <= 1.0e-14 * big:
+            return 1
+        if ip != k:
+            for j in range(n):                            # DO 15
+                t = m[k, j]
+                m[k, j] = m[ip, j]
+                m[ip, j] = t
+            t = rhs[k]
+            rhs[k] = rhs[ip]
+            rhs[ip] = t
+        for i in range(k + 1, n):                         # DO 30
+            t = m[i, k] / m[k, k]
+            for j in range(k, n):                         # DO 20
+                m[i, j] = m[i, j] - t * m[k, j]
+            rhs[i] = rhs[i] - t * rhs[k]
+    for i in range(n - 1, -1, -1):                        # DO 60
+        t = rhs[i]
+        for j in range(i + 1, n):                         # DO 50
+            t = t - m[i, j] * x[j]
+        x[i] = t / m[i, i]
+    return 0
+
+
+@njit(cache=True)
+def _dqprog(h, g, a, b, neq):
+    """DQPROG on validated arguments: (status, DIAG, SOL, NACT, IACT, ALAMDA).
+
+    Indices are 0-based (constraint i is the FORTRAN's I = i+1; P = 0 is p = -1).
+    ``gn[k]`` holds the column GN(.,K).  Work arrays are sized by NCON (see the module
+    docstring), the FORTRAN's by MAXV.
+    """
+    nvar, ncon = g.shape[0], b.shape[0]
+    low = np.zeros((nvar, nvar))
+    sol = np.zeros(nvar)
+    iact = np.zeros(ncon, dtype=np.int32)
+    alamda = np.zeros(ncon)
+    nact = 0
+    diag = _cholesky_shift(h, low)
+    # ---- unconstrained minimum: SOL = -(H+DIAG I)^-1 G (140)
+    rhs = np.empty(max(nvar, ncon))
+    for i in range(nvar):                                 # DO 140
+        rhs[i] = -g[i]
+    _chsl(low, rhs, sol)
+    active = np.zeros(ncon, dtype=np.bool_)
+    sgn = np.empty(ncon)
+    enorm = np.empty(ncon)
+    for i in range(ncon):                                 # DO 150
+        active[i] = False
+        sgn[i] = 1.0
+        s = 0.0
+        for j in range(nvar):                             # DO 145: + A(I,J)**2
+            s = s + a[i, j] * a[i, j]
+        enorm[i] = _max(math.sqrt(s), 1.0)
+    w = np.empty(nvar)
+    z = np.empty(nvar)
+    gn = np.empty((ncon, nvar))
+    m = np.empty((ncon, ncon))
+    r = np.empty(ncon)
+    u = np.empty(ncon)
+    maxit = 50 * (ncon + nvar) + 100
+    it = 0
+    while True:
+        # ---- outer loop: pick a violated constraint P (200)
+        it += 1
+        if it > maxit:
+            return ITERATION_LIMIT, diag, sol, nact, iact, alamda
+        p = -1
+        smin = 0.0
+        for i in range(ncon):                             # DO 210
+            if active[i]:
+                continue
+            s = -b[i]
+            for j in range(nvar):                         # DO 205
+                s = s + a[i, j] * sol[j]
+            if i < neq:
+                # an equality enters first, turned so that it is violated (GO TO 220)
+                sgn[i] = 1.0
+                if s > 0.0:
+                    sgn[i] = -1.0
+                p = i
+                smin = sgn[i] * s
+                break
+            tol = 1.0e3 * EPS * enorm[i] * _max(abs(b[i]), 1.0)
+            if s < -tol and s / enorm[i] < smin:
+                p = i
+                smin = s / enorm[i]
+        if p < 0:
+            break                                         # GO TO 900
+        uplus = 0.0                                       # 220
+        while True:
+            # ---- inner loop: step towards satisfying constraint P (300)
+            it += 1
+            if it > maxit:
+                return ITERATION_LIMIT, diag, sol, nact, iact, alamda
+            # W = H^-1 N+, GN(.,K) = H^-1 N_K for the active normals
+            for j in range(nvar):                         # DO 305
+                rhs[j] = sgn[p] * a[p, j]
+            _chsl(low, rhs, w)
+            for k in range(nact):                         # DO 320
+                jj = iact[k]
+                for j in range(nvar):                     # DO 310
+                    rhs[j] = sgn[jj] * a[jj, j]
+                _chsl(low, rhs, gn[k])
+            # R = (N'H^-1N)^-1 N'W ; Z = W - GN R
+            if nact > 0:
+                for i in range(nact):                     # DO 340
+                    ii = iact[i]
+                    s = 0.0
+                    for j in range(nvar):                 # DO 330
+                        s = s + sgn[ii] * a[ii, j] * w[j]
+                    rhs[i] = s
+                    for k in range(nact):                 # DO 336
+                        s = 0.0
+                        for j in range(nvar):             # DO 335
+                            s = s + sgn[ii] * a[ii, j] * gn[k, j]
+                        m[i, k] = s
+                if _gaus(nact, m, rhs, r) != 0:
+                    return INCONSISTENT, diag, sol, nact, iact, alamda
+            zn = 0.0
+            for j in range(nvar):                         # DO 360
+                s = w[j]
+                for k in range(nact):                     # DO 350
+                    s = s - gn[k, j] * r[k]
+                z[j] = s
+                zn = zn + z[j] * sgn[p] * a[p, j]
+            # partial step T1 (a dual variable reaches zero), full step T2
+            t1 = -1.0
+            kdrop = -1
+            for k in range(nact):                         # DO 370
+                if iact[k] < neq:
+                    continue
+                if r[k] > EPS * _max(abs(u[k]), 1.0):
+                    t = u[k] / r[k]
+                    if kdrop < 0 or t < t1:
+                        t1 = t
+                        kdrop = k
+            s = -b[p]
+            for j in range(nvar):                         # DO 375
+                s = s + a[p, j] * sol[j]
+            s = sgn[p] * s
+            t2 = -1.0
+            if zn > EPS * (enorm[p] * enorm[p]):
+                t2 = -(s / zn)
+            if t2 < 0.0 and kdrop < 0:
+                # no step can satisfy constraint P: the constraints are inconsistent
+                return INCONSISTENT, diag, sol, nact, iact, alamda
+            if t2 < 0.0:
+                t = t1                                    # dual step only, then drop
+            elif kdrop < 0:
+                t = t2
+            else:
+                t = t2 if t2 < t1 else t1                 # MIN(T1, T2) as minsd picks
+            if t2 >= 0.0:
+                for j in range(nvar):                     # DO 380
+                    sol[j] = sol[j] + t * z[j]
+            for k in range(nact):                         # DO 385
+                u[k] = u[k] - t * r[k]
+            uplus = uplus + t
+            if t2 >= 0.0 and (kdrop < 0 or t2 <= t1):
+                # full step: P joins the active set
+                iact[nact] = p
+                u[nact] = uplus
+                nact += 1
+                active[p] = True
+                break                                     # GO TO 200
+            # partial step: drop the active constraint KDROP, stay with P
+            active[iact[kdrop]] = False
+            for k in range(kdrop, nact - 1):              # DO 390
+                iact[k] = iact[k + 1]
+                u[k] = u[k + 1]
+            nact -= 1                                     # GO TO 300
+    # ---- solved: multipliers in the original constraints' sense (900)
+    for k in range(nact):                                 # DO 910
+        alamda[k] = sgn[iact[k]] * u[k]
+    return SOLVED, diag, sol, nact, iact, alamda
+
+
+def hessian_shift(h) -> float:
+    """DIAG: the multiple of I that QPROG adds to H (0 for a positive definite H).
+
+    The DIAG rule of statements 5-130, operation for operation.
+    """
+    h = np.ascontiguousarray(finite_matrix("h", h))
+    return float(_cholesky_shift(h, np.zeros_like(h)))
+
+
+def qprog(h, g, a=None, b=None, neq: int = 0) -> dict:
+    """Our QPROG, ported (IMSL's calling convention, Goldfarb-Idnani; register D050).
+
+    Minimizes g'x + x'Hx/2 subject to a[:neq] x = b[:neq] and a[neq:] x >= b[neq:].
+    Returns ``sol``, ``diag`` (the multiple of the identity added to H, 0 when H is
+    positive definite), ``active`` (0-based constraint indices) and ``multipliers``,
+    as ``linkrepro.legacy.rahman1996.qprog``.  Raises QPError when the constraints are
+    inconsistent, at the iteration limit or where the solution is not finite (overflow);
+    ValueError/TypeError for bad arguments (shapes, sizes, non-finite h, g, a or b).
+    """
+    h, g, a, b, neq = qp_arguments(h, g, a, b, neq, MAXV, MAXC)
+    status, diag, sol, nact, iact, lam = _dqprog(np.ascontiguousarray(h), g, np.ascontiguousarray(a), b, neq)
+    if status == INCONSISTENT:
+        raise QPError("QPROG: the constraints are inconsistent")
+    if status == ITERATION_LIMIT:
+        raise QPError("QPROG: iteration limit reached")
+    if not (np.all(np.isfinite(sol)) and np.all(np.isfinite(lam[:nact]))):
+        raise QPError("QPROG: the solution is not finite (the arithmetic overflowed)")
+    return {"sol": sol, "diag": float(diag), "active": iact[:nact].copy(),
+            "multipliers": lam[:nact].copy()}

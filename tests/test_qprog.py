@@ -292,19 +292,7 @@ def test_inconsistent_constraints_raise_qperror_and_the_next_call_works():
     np.testing.assert_allclose(res["sol"], [1.0, 0.0])
 
 
-@pytest.mark.parametrize("args", [
-    (np.eye(2), [0.0, 0.0, 0.0]),                                      # g longer than H
-    (np.ones((2, 3)), [0.0, 0.0]),                                     # H not square
-    (np.eye(2), [0.0, 0.0], [[1.0, 0.0, 0.0]], [1.0]),                 # a has 3 columns
-    (np.eye(2), [0.0, 0.0], [[1.0, 0.0]], [1.0, 2.0]),                 # b too long
-    (np.eye(2), [0.0, 0.0], [[1.0, 0.0]], [1.0], 2),                   # neq > m
-    (np.eye(2), [0.0, 0.0], [[1.0, 0.0]], [1.0], -1),                  # neq < 0
-    (np.eye(2), [np.nan, 0.0]),                                        # not finite
-    (np.eye(61), np.zeros(61)),                                        # above MAXV = 60
-])
-def test_bad_arguments_raise_value_error(args):
-    with pytest.raises(ValueError):
-        qprog(*args)
+# bad arguments: tests/test_differential_qprog.py::test_bad_arguments_raise_value_error_in_both
 
 
 def test_a_failing_qprog_does_not_stop_the_interpreter():
