@@ -5,7 +5,7 @@ VENV   := .venv
 BIN    := $(VENV)/bin
 SOURCES := pyproject.toml meson.build $(shell find legacy port harness pkgroot -type f -not -name '*.pyc' 2>/dev/null)
 
-.PHONY: reproduce test bench setup clean
+.PHONY: reproduce test bench fuzz setup clean
 
 reproduce: $(VENV)/.installed
 	$(BIN)/linkrepro reproduce --out out
@@ -15,6 +15,9 @@ test: $(VENV)/.installed
 
 bench: $(VENV)/.installed
 	$(BIN)/linkrepro bench
+
+fuzz: $(VENV)/.installed
+	$(BIN)/python -m linkrepro.harness.fuzz --calls 10000 --seed 0 --timeout 20 --out out/fuzz.json
 
 setup: $(VENV)/.installed
 

@@ -16,12 +16,11 @@ would alone (f2py holds the GIL during a call as well: the FORTRAN never runs tw
 """
 from __future__ import annotations
 
-import math
 import threading
 
 import numpy as np
 
-from ..checks import finite_matrix, qp_arguments
+from ..checks import LARGEST, finite_matrix, parameter, qp_arguments
 from ..errors import ConvergenceError, QPError, SingularPositionError
 from . import _rahman1996 as _f
 
@@ -48,17 +47,17 @@ def cssp(a1=2.0, a2=8.0, a4=1.0, alpha4_deg=250.0, s1=0.4, rpm=3000.0, solution=
     ``positions`` (2 passes x 37 crank angles x theta2, eta2, theta3, eta3 in rad, s4 in in:
     the Newton's converged joint variables, D053).
     """
-    for name, value in (("a1", a1), ("a2", a2), ("rpm", rpm)):
-        if not (math.isfinite(value) and value > 0):
-            raise ValueError(f"{name} must be positive and finite, got {value!r}")
-    for name, value in (("a4", a4), ("alpha4_deg", alpha4_deg), ("s1", s1)):
-        if not math.isfinite(value):
-            raise ValueError(f"{name} must be finite, got {value!r}")
+    a1, a2, rpm = (parameter(name, v, positive=True) for name, v in (("a1", a1), ("a2", a2), ("rpm", rpm)))
+    a4, alpha4_deg, s1 = (parameter(name, v) for name, v in (("a4", a4), ("alpha4_deg", alpha4_deg), ("s1", s1)))
     sol_in = np.zeros(9, dtype=np.float32)
     if solution is not None:
-        sol_in = np.asarray(solution, dtype=np.float32).ravel()
-        if sol_in.shape != (9,) or not np.all(np.isfinite(sol_in)):
+        try:
+            sol_in = np.asarray(solution, dtype=np.float64).ravel()
+        except (TypeError, ValueError) as exc:
+            raise TypeError(f"solution must hold 9 masses ({exc})") from None
+        if sol_in.shape != (9,) or not np.all(np.isfinite(sol_in)) or np.any(np.abs(sol_in) > LARGEST):
             raise ValueError("solution must hold 9 finite masses")
+        sol_in = sol_in.astype(np.float32)
     with FORTRAN_LOCK:
         table, sol, inert, hout, diag, istat, fail_deg, qout = _f.cssp(
             a1, a2, a4, alpha4_deg, s1, rpm, int(solution is not None), sol_in)

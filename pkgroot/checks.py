@@ -2,7 +2,47 @@
 mistake (TypeError for what is not a number, ValueError for a number out of its domain)."""
 from __future__ import annotations
 
+import math
+import numbers
+
 import numpy as np
+
+#: the largest magnitude a parameter may have (inch, rpm, deg, lbf*in): a bound on the
+#: arithmetic, not on physics; beyond it the programs' powers of speeds and lengths overflow
+LARGEST = 1e6
+
+
+def parameter(name: str, value, *, positive: bool = False, largest: float = LARGEST) -> float:
+    """One real parameter as a float: TypeError if it is not a real number (a bool is not),
+    ValueError if it is not finite, not positive where it must be, or beyond ``largest``."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
+        raise TypeError(f"{name} must be a real number, got {type(value).__name__} {value!r}")
+    value = float(value)
+    if not math.isfinite(value):
+        raise ValueError(f"{name} must be finite, got {value!r}")
+    if positive and value <= 0.0:
+        raise ValueError(f"{name} must be positive, got {value!r}")
+    if abs(value) > largest:
+        raise ValueError(f"{name} = {value!r} is out of range (at most {largest:g} in magnitude)")
+    return value
+
+
+def angles_deg(name: str, value, *, largest: float = LARGEST) -> np.ndarray:
+    """Input angles (deg) as a float64 array: TypeError unless an array of numbers (not bool,
+    str or object), ValueError unless non-empty, 1-D (a scalar is not) and finite, within
+    ``largest``."""
+    raw = np.asarray(value)
+    if raw.dtype.kind not in "iuf":
+        raise TypeError(f"{name} must be an array of numbers (deg), got dtype {raw.dtype}")
+    deg = raw.astype(np.float64)
+    if deg.ndim != 1 or deg.size == 0:
+        raise ValueError(f"{name} must be a non-empty 1-D array of angles (deg), got shape {deg.shape}")
+    if not np.all(np.isfinite(deg)):
+        raise ValueError(f"{name} must be finite, got {deg[~np.isfinite(deg)][0]!r} at index "
+                         f"{int(np.argmax(~np.isfinite(deg)))}")
+    if np.any(np.abs(deg) > largest):
+        raise ValueError(f"{name} is out of range (at most {largest:g} deg in magnitude)")
+    return deg
 
 
 def finite_matrix(name: str, value, shape: tuple[int, int] | None = None) -> np.ndarray:

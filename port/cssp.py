@@ -105,6 +105,10 @@ def balance(inputs: CsspInputs = CsspInputs(), quirks: CsspQuirks = CSSP_PRINTED
     With ``open_loop_model`` the listing's two passes run: OF accumulates over both, the
     tables use the first QP's answer, Table 5.1 the second's (as printed).
     """
+    if not isinstance(inputs, CsspInputs):
+        raise TypeError(f"inputs must be CsspInputs, got {type(inputs).__name__}")
+    if not isinstance(quirks, CsspQuirks):
+        raise TypeError(f"quirks must be CsspQuirks (CSSP_PRINTED, CSSP_CORRECTED, ...), got {type(quirks).__name__}")
     c = Constants.of(inputs, quirks.cssp_real4)
     single = (lambda v: np.asarray(v, np.float32).astype(float)) if quirks.cssp_real4 else np.asarray
     counted = slice(0, 37 if quirks.objective_37_positions else 36)

@@ -13,6 +13,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..checks import parameter
+
 #: g (in/s^2) and the weights (lbf) of crank, connecting rod and slider
 GRAVITY = 386.4
 WEIGHTS = (1.9, 7.6, 6.0)
@@ -34,6 +36,10 @@ QP_ROWS = np.vstack([[1, 1, 1, 0, 0, 0, 0, 0, 0], [0, 0, 0, 0, 1, 1, 1, 0, 0],
 QP_EQUALITIES = 3
 
 
+#: the fields of CsspInputs that must be positive
+POSITIVE = ("a1", "a2", "rpm")
+
+
 @dataclass(frozen=True)
 class CsspInputs:
     """The example of section 5.2: lengths (in), ground twist (deg), crank speed (rpm)."""
@@ -45,13 +51,10 @@ class CsspInputs:
     rpm: float = 3000.0
 
     def __post_init__(self):
-        for name in ("a1", "a2", "rpm"):
-            value = getattr(self, name)
-            if not (math.isfinite(value) and value > 0):
-                raise ValueError(f"{name} must be positive and finite, got {value!r}")
-        for name in ("a4", "alpha4_deg", "s1"):
-            if not math.isfinite(getattr(self, name)):
-                raise ValueError(f"{name} must be finite, got {getattr(self, name)!r}")
+        """Each field a real number (TypeError), finite, within linkrepro.checks.LARGEST, and
+        a1, a2, rpm positive (ValueError): the rules of the legacy face too."""
+        for name in ("a1", "a2", "a4", "alpha4_deg", "s1", "rpm"):
+            object.__setattr__(self, name, parameter(name, getattr(self, name), positive=name in POSITIVE))
 
     @property
     def omega(self) -> float:

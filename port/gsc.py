@@ -17,6 +17,7 @@ import itertools
 import numpy as np
 import pandas as pd
 
+from ..checks import angles_deg
 from ..errors import AssemblyError, ConvergenceError, SingularPositionError
 from . import gsc_forces, gsc_position, gsc_printed_rates, gsc_rates
 from .cssp_mechanics import kinematics
@@ -94,8 +95,13 @@ def analyse(inputs: GscInputs = GscInputs(), crank_deg=CRANK_DEG, quirks: GscQui
     """One configuration over crank angles (deg, in sweep order).  ``strict``: raise the typed
     error of the first failed angle (AssemblyError, ConvergenceError, SingularPositionError)
     instead of returning non-converged rows.  ``positions``: a ``gsc_position.PositionRun``
-    already solved for these angles (the printed model only)."""
-    th = np.radians(np.asarray(crank_deg, dtype=float))
+    already solved for these angles (the printed model only).  ``crank_deg``: a non-empty
+    1-D array of finite angles (ValueError otherwise, TypeError if not numbers)."""
+    if not isinstance(inputs, GscInputs):
+        raise TypeError(f"inputs must be GscInputs, got {type(inputs).__name__}")
+    if not isinstance(quirks, GscQuirks):
+        raise TypeError(f"quirks must be GscQuirks (GSC_PRINTED, GSC_CORRECTED, ...), got {type(quirks).__name__}")
+    th = np.radians(angles_deg("crank_deg", crank_deg))
     if quirks.five_variable_loop:
         q, status, closure, forces, iterations = _five_variable(inputs, th, quirks, positions)
     else:

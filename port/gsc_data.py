@@ -15,6 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..checks import parameter
 from .cssp_data import CsspInputs
 
 #: g (in/s^2), the example's weight density (lbf/in^3, "specific gravity d = 0.28")
@@ -42,12 +43,8 @@ class GscInputs(CsspInputs):
 
     def __post_init__(self):
         super().__post_init__()
-        for name in ("r1", "r2", "r3"):
-            if not (math.isfinite(getattr(self, name)) and getattr(self, name) > 0):
-                raise ValueError(f"{name} must be positive and finite, got {getattr(self, name)!r}")
-        for name in ("torque", "alpha"):
-            if not math.isfinite(getattr(self, name)):
-                raise ValueError(f"{name} must be finite, got {getattr(self, name)!r}")
+        for name in ("r1", "r2", "r3", "torque", "alpha"):
+            object.__setattr__(self, name, parameter(name, getattr(self, name), positive=name.startswith("r")))
 
     def axial(self, theta1) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """S1, S1', S1'' (in, in/s, in/s^2) at crank angles theta1 (rad): eqs. (28), (28a),

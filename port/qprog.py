@@ -15,10 +15,9 @@ fused multiply-add, as the FORTRAN is built with -ffp-contract=off).  The result
 Two faults of the stand-in, found by tests/test_differential_qprog.py, are mended in the
 FORTRAN and here alike (register D050): where raising DIAG by the shortfall would not change
 it in floating point (a negative H_jj, e.g. H = diag(-1.3, 5.3)), DIAG takes the next number
-up (the FORTRAN repeated GO TO 100 forever); and the active set can hold one more
-constraint than there are variables (a numerically dependent one, before QPGAUS finds M
-singular), for which GN, M and RHS now have room (at 60 variables the FORTRAN wrote out of
-bounds).  Non-finite a, b, h or g are ValueError and a non-finite solution (overflow) is
+up (the FORTRAN repeated GO TO 100 forever); and the active set can take numerically
+dependent normals before QPGAUS finds M singular, more than there are variables, so GN, M
+and RHS are sized by the constraints (the FORTRAN's, sized by the variables, overflowed).  Non-finite a, b, h or g are ValueError and a non-finite solution (overflow) is
 QPError, in both faces (``linkrepro.checks``).
 
 Units are the caller's; in the CSSP balancing problem x holds the nine point masses

@@ -1,0 +1,42 @@
+"""The fuzz tool (issue 11, item 3): its runner and classification on calls whose outcome is
+known, and a fast slice of the full run (`make fuzz` runs 10,000 calls)."""
+import pytest
+
+from linkrepro.harness import fuzz
+
+#: call texts whose outcome the runner must report, and that outcome
+KNOWN = [
+    ("1.0 + 1.0", False, "ok"),
+    ("float('nan')", False, "nan"),
+    ("int('x')", False, "typed"),
+    ("1 / 0", False, "untyped"),
+    ("np.linalg.inv(np.zeros((2, 2)))", False, "untyped"),          # LinAlgError is a ValueError
+    ("(_ for _ in ()).throw(AssemblyError('open', 20.0))", True, "typed"),
+    ("(_ for _ in ()).throw(AssemblyError('open'))", True, "angle"),
+    ("(_ for _ in ()).throw(SingularPositionError('pivot'))", False, "typed"),
+    ("__import__('os')._exit(0)", False, "crash"),                    # what a FORTRAN STOP does
+    ("__import__('os').kill(__import__('os').getpid(), 11)", False, "crash"),
+    ("__import__('time').sleep(60)", False, "hang"),
+    ("1.0 + 2.0", False, "ok"),                                       # the replaced worker runs on
+]
+
+
+def test_runner_classifies_known_outcomes():
+    jobs = [fuzz.Job(i, "known", text, angles=angles) for i, (text, angles, _) in enumerate(KNOWN)]
+    results = fuzz.run(jobs, timeout=3.0, workers=2)
+    assert [r["outcome"] for r in results] == [outcome for _, _, outcome in KNOWN]
+    assert "SIGSEGV" in results[9]["detail"]
+
+
+def test_same_seed_same_calls():
+    first, again, other = fuzz.generate(120, 7), fuzz.generate(120, 7), fuzz.generate(120, 8)
+    assert [j.text for j in first] == [j.text for j in again]
+    assert [j.text for j in first] != [j.text for j in other]
+    assert {j.entry for j in first} == {e.name for e in fuzz.entries()}
+
+
+def test_fuzz_slice_has_no_findings():
+    report = fuzz.fuzz(calls=200, seed=0, timeout=20.0)
+    assert len(report.results) == 200
+    if report.findings:
+        pytest.fail(fuzz.format_findings(report), pytrace=False)
