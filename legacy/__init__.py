@@ -11,9 +11,14 @@ Units: inch, pound-force, second; angles in radians for ``alp`` and degrees for 
 input-angle grid; speed in rpm; ``mass_lbf`` is a weight in lbf (mass = W/g with
 g = 32.178*12 in/s^2, as the listing divides).
 
-Errors: ``ValueError`` for bad parameters (checked here, before FORTRAN sees them),
-``AssemblyError`` when the four-bar (or its cognate) cannot close at some input
-angle, ``SingularPositionError`` when a position gives a non-finite result.
+Errors: ``TypeError`` for an argument that is not a real number (str, bool, complex,
+None, arrays), ``ValueError`` for bad parameters (checked here, before FORTRAN sees them:
+lengths, section values and step positive and finite, alp finite, |rpm| <= 2**31-1, a
+weight or density >= 0; and every value the listings hold in REAL*4 (the weight, the step)
+or assign from REAL*4 literals (section values, density) representable there: finite, and
+positive where it must be), ``AssemblyError`` when the four-bar (or its cognate) cannot
+close at some input angle, ``SingularPositionError`` when a position gives a non-finite
+result (both with the input angle; the port raises the same, see ``linkrepro.port``).
 
 Threads: every call into the compiled FORTRAN (static storage) holds ``FORTRAN_LOCK``;
 calls from several threads are serialized and each returns what it would alone.
@@ -25,6 +30,7 @@ import threading
 
 import numpy as np
 
+from ..checks import as_real4, parameter, speed_rpm, weight_lbf
 from ..errors import AssemblyError, SingularPositionError
 from . import _ali1977 as _f
 
@@ -49,39 +55,24 @@ DENSITY_PRINTED = float(np.float32(0.098))
 
 def angle_grid(step_deg: float) -> int:
     """Number of input angles 0, step, ..., 360 (360 included when step divides it)."""
-    _positive("step_deg", step_deg)
+    step_deg = parameter("step_deg", step_deg, positive=True, largest=None)
+    as_real4("step_deg", step_deg, positive=True)
     n = int(math.floor(360.0 / step_deg + 1e-9)) + 1
     if n > 200_000:
         raise ValueError(f"step_deg={step_deg} gives {n} angles; at most 200000 are allowed")
     return n
 
 
-def _positive(name: str, value: float) -> float:
-    value = float(value)
-    if not math.isfinite(value) or value <= 0.0:
-        raise ValueError(f"{name} must be a finite positive number, got {value!r}")
-    return value
-
-
-def _finite(name: str, value: float) -> float:
-    value = float(value)
-    if not math.isfinite(value):
-        raise ValueError(f"{name} must be finite, got {value!r}")
-    return value
-
-
 def _check_inputs(lengths, alp, rpm, mass_lbf, area, modulus, inertia, step_deg):
+    """The port's rules (linkrepro.checks): lengths positive, alp finite, the listing's speed,
+    weight and REAL*4 section values; returns the number of input angles."""
     for name, value in zip(("l1", "l2", "l3", "l4", "l5"), lengths):
-        _positive(name, value)
-    _finite("alp", alp)
-    _finite("rpm", rpm)
-    if abs(rpm) > 2**31 - 1:
-        raise ValueError(f"rpm={rpm} does not fit the listing's INTEGER speed variable")
-    if _finite("mass", mass_lbf) < 0:
-        raise ValueError(f"the mass (or density) must be >= 0, got {mass_lbf}")
-    _positive("area", area)
-    _positive("modulus", modulus)
-    _positive("inertia", inertia)
+        parameter(f"link length {name}", value, positive=True, largest=None)
+    parameter("alp", alp, largest=None)
+    speed_rpm(rpm)
+    weight_lbf("mass (or density)", mass_lbf)
+    for name, value in (("area", area), ("modulus", modulus), ("inertia", inertia)):
+        as_real4(f"section {name}", parameter(f"section {name}", value, positive=True, largest=None), positive=True)
     return angle_grid(step_deg)
 
 
@@ -92,7 +83,7 @@ def _raise_on_status(istat: int, deg: np.ndarray, arrays: dict, program: str) ->
     for name, values in arrays.items():
         bad = ~np.isfinite(values)
         if bad.any():
-            i = int(np.argmax(bad))
+            i = int(np.argmax(bad.reshape(len(deg), -1).any(axis=1)))   # the angle, for (N, ...) too
             raise SingularPositionError(f"{program}: non-finite {name}", float(deg[i]))
 
 

@@ -12,18 +12,58 @@ import numpy as np
 LARGEST = 1e6
 
 
-def parameter(name: str, value, *, positive: bool = False, largest: float = LARGEST) -> float:
+def parameter(name: str, value, *, positive: bool = False, largest: float | None = LARGEST) -> float:
     """One real parameter as a float: TypeError if it is not a real number (a bool is not),
-    ValueError if it is not finite, not positive where it must be, or beyond ``largest``."""
+    ValueError if it is not finite, not positive where it must be, or beyond ``largest``
+    (None: no bound but finiteness)."""
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
         raise TypeError(f"{name} must be a real number, got {type(value).__name__} {value!r}")
-    value = float(value)
+    try:
+        value = float(value)
+    except OverflowError:
+        raise ValueError(f"{name}={value} is too large for a double") from None
     if not math.isfinite(value):
         raise ValueError(f"{name} must be finite, got {value!r}")
     if positive and value <= 0.0:
         raise ValueError(f"{name} must be positive, got {value!r}")
-    if abs(value) > largest:
+    if largest is not None and abs(value) > largest:
         raise ValueError(f"{name} = {value!r} is out of range (at most {largest:g} in magnitude)")
+    return value
+
+
+def as_real4(name: str, value: float, *, positive: bool = False) -> float:
+    """What a listing's REAL*4 variable holds for ``value``: ValueError if that is not finite
+    (or, with ``positive``, 0)."""
+    with np.errstate(over="ignore"):
+        held = float(np.float32(value))
+    if not math.isfinite(held):
+        raise ValueError(f"{name}={value!r} does not fit the listing's REAL*4 variable")
+    if positive and held <= 0.0:
+        raise ValueError(f"{name}={value!r} is 0 in the listing's REAL*4")
+    return held
+
+
+# Ali (1977): rules of the listings' own variables, shared by the legacy face and the port.
+
+#: The Case I listing keeps the speed in an INTEGER (N=SPEED); the same bound holds for the
+#: REAL*4 speed of Cases II and III, so that every program has one domain.
+RPM_LIMIT = 2**31 - 1
+
+
+def speed_rpm(value) -> float:
+    """The input speed (rpm): finite, |rpm| <= 2**31 - 1."""
+    value = parameter("rpm", value, largest=None)
+    if abs(value) > RPM_LIMIT:
+        raise ValueError(f"rpm={value} is out of range: |rpm| <= 2**31 - 1 (Case I's INTEGER speed N)")
+    return value
+
+
+def weight_lbf(name: str, value) -> float:
+    """A weight (lbf) or weight density (lbf/in^3): finite, >= 0, representable in REAL*4."""
+    value = parameter(name, value, largest=None)
+    if value < 0.0:
+        raise ValueError(f"{name} must be >= 0, got {value!r}")
+    as_real4(name, value)
     return value
 
 
@@ -31,7 +71,10 @@ def angles_deg(name: str, value, *, largest: float = LARGEST) -> np.ndarray:
     """Input angles (deg) as a float64 array: TypeError unless an array of numbers (not bool,
     str or object), ValueError unless non-empty, 1-D (a scalar is not) and finite, within
     ``largest``."""
-    raw = np.asarray(value)
+    try:
+        raw = np.asarray(value)
+    except ValueError as exc:                             # ragged nesting
+        raise ValueError(f"{name} must be a 1-D array of angles (deg): {exc}") from None
     if raw.dtype.kind not in "iuf":
         raise TypeError(f"{name} must be an array of numbers (deg), got dtype {raw.dtype}")
     deg = raw.astype(np.float64)

@@ -5,6 +5,9 @@ and follower angles from the half-angle (Freudenstein) quadratic, then angular
 velocities and accelerations at constant input speed.  Lengths in inches,
 angles in radians, speeds in rad/s.  Every function is vectorised over the input
 angle ``t2``; ``pi`` is the value of pi the caller uses (the listings use 22/7).
+
+The argument checks (``TypeError`` for a value of the wrong type, ``ValueError`` for a value
+outside the programs' domain) are ``linkrepro.checks``, shared with the legacy face.
 """
 from __future__ import annotations
 
@@ -12,8 +15,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..checks import parameter
 from ..errors import AssemblyError, SingularPositionError
-
 
 @dataclass(frozen=True)
 class Lengths:
@@ -26,9 +29,8 @@ class Lengths:
 
     def __post_init__(self):
         for name in ("l1", "l2", "l3", "l4", "l5"):
-            value = float(getattr(self, name))
-            if not np.isfinite(value) or value <= 0.0:
-                raise ValueError(f"link length {name} must be finite and positive, got {value!r}")
+            object.__setattr__(self, name, parameter(f"link length {name}", getattr(self, name), positive=True,
+                                                     largest=None))
 
 
 def freudenstein_constants(l1, l3, l4, l5):
@@ -41,35 +43,64 @@ def freudenstein_constants(l1, l3, l4, l5):
     return k1, k2, k3, k4, k5
 
 
+def _half_angle_terms(t2, k):
+    """AA..FF of the listings (statements 14-19) and the two discriminants."""
+    k1, k2, k3, k4, k5 = k
+    c, s = np.cos(t2), np.sin(t2)
+    with np.errstate(invalid="ignore", over="ignore"):     # constants may be inf/NaN (a degenerate cognate)
+        aa = c + k3 - k1 - (k2 * c)
+        bb = -2.0 * s
+        cc = k1 + k3 - (1.0 + k2) * c
+        dd = (k4 * c) + c + k5 - k1
+        ee = -2.0 * s
+        ff = (k4 * c) - c + k5 + k1
+        disc3 = ee * ee - 4.0 * dd * ff
+        disc4 = bb * bb - 4.0 * aa * cc
+    return aa, bb, dd, ee, disc3, disc4
+
+
+def cannot_close(t2, k) -> np.ndarray:
+    """True at each input angle where the listing's test fails: a negative discriminant
+    (``EE*EE-4.0*DD*FF.LT.0.0.OR.BB*BB-4.0*AA*CC.LT.0.0``; NaN compares false, as there)."""
+    *_, disc3, disc4 = _half_angle_terms(t2, k)
+    return (disc3 < 0.0) | (disc4 < 0.0)
+
+
+def raise_first_assembly_failure(deg, **loops) -> None:
+    """AssemblyError at the first input angle where any of the named loops (``who=mask``)
+    cannot close: the listings test every loop at one angle before going on to the next."""
+    first = None
+    for who, bad in loops.items():
+        if np.any(bad):
+            i = int(np.argmax(bad))
+            if first is None or i < first[0]:
+                first = (i, who)
+    if first is not None:
+        raise AssemblyError(f"{first[1]}: the four-bar cannot close", float(deg[first[0]]))
+
+
 def half_angle_positions(t2, k, deg, who):
     """Coupler and follower angles T3, T4 (rad) from the half-angle quadratics.
 
     ``k`` holds K1..K5; ``deg`` the input angles (for error messages).
     Raises AssemblyError where a discriminant is negative (the loop cannot close).
     """
-    k1, k2, k3, k4, k5 = k
-    c, s = np.cos(t2), np.sin(t2)
-    aa = c + k3 - k1 - (k2 * c)
-    bb = -2.0 * s
-    cc = k1 + k3 - (1.0 + k2) * c
-    dd = (k4 * c) + c + k5 - k1
-    ee = -2.0 * s
-    ff = (k4 * c) - c + k5 + k1
-    disc3 = ee * ee - 4.0 * dd * ff
-    disc4 = bb * bb - 4.0 * aa * cc
+    aa, bb, dd, ee, disc3, disc4 = _half_angle_terms(t2, k)
     bad = (disc3 < 0.0) | (disc4 < 0.0)
     if np.any(bad):
         i = int(np.argmax(bad))
         raise AssemblyError(f"{who}: the four-bar cannot close", float(deg[i]),
                             discriminant=float(min(disc3[i], disc4[i])))
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         t3 = 2.0 * np.arctan((-ee - np.sqrt(disc3)) / (2.0 * dd))
         t4 = 2.0 * np.arctan((-bb - np.sqrt(disc4)) / (2.0 * aa))
     return t3, t4
 
 
 def check_finite(deg, who, **arrays):
-    """Raise SingularPositionError at the first input angle with a non-finite value."""
+    """Raise SingularPositionError where a result is not finite: the quantities are taken in
+    the order given, and for the first one that is non-finite anywhere, its first input angle
+    (with any non-finite entry along the trailing axes), as the legacy face reports it."""
     for name, values in arrays.items():
         bad = ~np.isfinite(values)
         if np.any(bad):
@@ -94,23 +125,28 @@ class Cognate:
 
     @classmethod
     def of(cls, lengths: Lengths, alp: float, pi: float) -> "Cognate":
-        l1, l2, l3, l4, l5 = lengths.l1, lengths.l2, lengths.l3, lengths.l4, lengths.l5
-        k = l2 / l3
-        cl4 = np.sqrt((l2 * l2) + (l3 * l3) - (2.0 * l2 * l3 * np.cos(alp)))
-        cl3 = l4 * cl4 / l3
-        cl2 = k * l4
-        cl5 = np.sqrt(((k * l5) * (k * l5)) + (l5 * l5) - (2.0 * l5 * l5 * k * np.cos(alp)))
-        cl1 = l1 * cl4 / l3
-        cbta = ((l3 * l3) + (cl4 * cl4) - (l2 * l2)) / (2.0 * l3 * cl4)
-        sbta = np.sqrt(1.0 - cbta * cbta)
-        beta = np.arctan(sbta / cbta)
-        calp = pi - (beta + alp)
+        l1, l2, l3, l4, l5 = (np.float64(v) for v in (lengths.l1, lengths.l2, lengths.l3, lengths.l4, lengths.l5))
+        # IEEE arithmetic as in the listing: a degenerate cognate (CL4 = 0 when L2 = L3 and
+        # ALP = 0, or 1 - CBTA**2 < 0 by rounding) gives inf or NaN here, not an exception;
+        # the caller then reports the input angle where the results stop being finite.
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+            k = l2 / l3
+            cl4 = np.sqrt((l2 * l2) + (l3 * l3) - (2.0 * l2 * l3 * np.cos(alp)))
+            cl3 = l4 * cl4 / l3
+            cl2 = k * l4
+            cl5 = np.sqrt(((k * l5) * (k * l5)) + (l5 * l5) - (2.0 * l5 * l5 * k * np.cos(alp)))
+            cl1 = l1 * cl4 / l3
+            cbta = ((l3 * l3) + (cl4 * cl4) - (l2 * l2)) / (2.0 * l3 * cl4)
+            sbta = np.sqrt(1.0 - cbta * cbta)
+            beta = np.arctan(sbta / cbta)
+            calp = pi - (beta + alp)
         return cls(float(cl1), float(cl2), float(cl3), float(cl4), float(cl5), float(beta), float(calp))
 
     def constants(self):
         """CK1..CK5 (cognate listing, 43-47): the crossed loop's half-angle constants."""
-        cl1, cl3, cl4, cl5 = self.cl1, self.cl3, self.cl4, self.cl5
-        return (cl5 / cl1, -cl5 / cl4,
-                (cl3 * cl3 - cl1 * cl1 - cl4 * cl4 - cl5 * cl5) / (2.0 * cl1 * cl4),
-                -cl5 / cl3,
-                (cl1 * cl1 + cl3 * cl3 + cl5 * cl5 - cl4 * cl4) / (2.0 * cl1 * cl3))
+        cl1, cl3, cl4, cl5 = (np.float64(v) for v in (self.cl1, self.cl3, self.cl4, self.cl5))
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+            return (cl5 / cl1, -cl5 / cl4,
+                    (cl3 * cl3 - cl1 * cl1 - cl4 * cl4 - cl5 * cl5) / (2.0 * cl1 * cl4),
+                    -cl5 / cl3,
+                    (cl1 * cl1 + cl3 * cl3 + cl5 * cl5 - cl4 * cl4) / (2.0 * cl1 * cl3))

@@ -9,6 +9,19 @@ degrees; ``rpm`` in rev/min; ``mass_lbf`` a weight in lbf (mass = W/g,
 g = 32.178*12 in/s^2 as the listings divide).  Deflections come out in inches,
 rotations in radians.  Everything is vectorised over the input angles.
 
+Arguments (every public function of the Ali ports): ``deg`` a non-empty 1-D array of
+finite input angles (a scalar or 0-D array is refused like a 2-D one: ValueError; a
+non-numeric dtype: TypeError); ``lengths`` a ``Lengths``, ``section`` a ``Section``,
+``quirks`` a ``Quirks`` (TypeError otherwise); ``alp`` finite; ``rpm`` finite with
+|rpm| <= 2**31 - 1; a weight or density finite, >= 0 and representable in REAL*4.
+Section values and densities are the listings' REAL*4 literals: with ``real4_storage``
+they are rounded to single precision first (ValueError if that gives 0 or infinity), so
+``Section(a, e, i)`` here is the legacy build called with ``area=float32(a)``, ....
+A linkage that cannot close raises AssemblyError at the first input angle where the
+listing's test fails (source and cognate loops tested angle by angle); a result that is not
+finite raises SingularPositionError at the first angle where the first non-finite quantity
+(in the order the results are returned) is not finite: both as the legacy face does.
+
 With ``quirks=PRINTED`` the formulas, the order of operations and the REAL*4
 storage are the listings', and the results equal the legacy build's.  Each
 quirk switched off removes one bug of the original (see ``quirks.py``).
@@ -19,7 +32,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .fourbar import Cognate, Lengths, check_finite, freudenstein_constants, half_angle_positions
+from ..checks import angles_deg, as_real4, parameter, speed_rpm, weight_lbf
+from .fourbar import (Cognate, Lengths, cannot_close, check_finite, freudenstein_constants,
+                      half_angle_positions, raise_first_assembly_failure)
 from .quirks import CORRECTED, PRINTED, Quirks
 from .real4 import product, store
 
@@ -44,15 +59,16 @@ class Section:
 
     def __post_init__(self):
         for name in ("area", "modulus", "inertia"):
-            value = float(getattr(self, name))
-            if not np.isfinite(value) or value <= 0.0:
-                raise ValueError(f"section {name} must be finite and positive, got {value!r}")
+            object.__setattr__(self, name, parameter(f"section {name}", getattr(self, name), positive=True,
+                                                     largest=None))
 
     def as_listing_holds(self, real4: bool) -> "Section":
-        """The listing assigns REAL*4 literals to its DOUBLE section variables."""
+        """The listing assigns REAL*4 literals to its DOUBLE section variables (ValueError if
+        a value is 0 or infinite in single precision)."""
         if not real4:
             return self
-        return Section(*(float(np.float32(v)) for v in (self.area, self.modulus, self.inertia)))
+        return Section(*(as_real4(f"section {name}", getattr(self, name), positive=True)
+                         for name in ("area", "modulus", "inertia")))
 
 
 @dataclass(frozen=True)
@@ -72,12 +88,16 @@ def _pi(quirks: Quirks) -> float:
     return PI_22_7 if quirks.pi_22_7 else np.pi
 
 
+def expect(name: str, value, kind: type):
+    """TypeError unless ``value`` is a ``kind`` (Lengths, Section, Quirks)."""
+    if not isinstance(value, kind):
+        raise TypeError(f"{name} must be a {kind.__name__}, got {type(value).__name__} {value!r}")
+    return value
+
+
 def input_angles(deg, quirks: Quirks) -> np.ndarray:
-    """T2 (rad) as the listings form it: (P2*2.0*PI)/360.0."""
-    deg = np.atleast_1d(np.asarray(deg, dtype=np.float64))
-    if not np.all(np.isfinite(deg)):
-        raise ValueError("input angles must be finite")
-    return (deg * 2.0 * _pi(quirks)) / 360.0
+    """T2 (rad) as the listings form it: (P2*2.0*PI)/360.0; ``deg`` as ``linkrepro.checks.angles_deg``."""
+    return (angles_deg("deg", deg) * 2.0 * _pi(quirks)) / 360.0
 
 
 def inertia_load(acc_x, acc_y, mass_lbf, quirks: Quirks):
@@ -98,9 +118,14 @@ def inertia_load(acc_x, acc_y, mass_lbf, quirks: Quirks):
     return np.stack([sign * (ax * m / g), sign * (ay * m / g), zero], axis=-1)
 
 
-def flexibility(l_ext, l_in, l_cpl, l_fol, section: Section, quirks: Quirks) -> np.ndarray:
+def flexibility(l_ext, l_in, l_cpl, l_fol, section: Section, quirks: Quirks,
+                modulus_first: bool = False) -> np.ndarray:
     """Element flexibility F (8x8) of eq. (29): extender (axial; bending 2x2),
-    input link (axial, bending), follower (axial), coupler (axial, end moment)."""
+    input link (axial, bending), follower (axial), coupler (axial, end moment).
+
+    ``modulus_first``: the input link's bending term written (L1*L1*L1)/(3.0*CE*CI), as
+    the Case III source listing has it, instead of 3.0*CA*ME (or 3.0*CMI*CME): the same
+    number in exact arithmetic, the listing's own rounding here."""
     ca, me, mi = section.area, section.modulus, section.inertia
     f = np.zeros((8, 8))
     f[0, 0] = l_ext / (ca * me)
@@ -109,7 +134,7 @@ def flexibility(l_ext, l_in, l_cpl, l_fol, section: Section, quirks: Quirks) -> 
     f[2, 2] = l_ext / (me * mi)
     f[3, 3] = l_in / (ca * me)
     bending = ca if quirks.input_link_bending_area else mi          # D016
-    f[4, 4] = (l_in * l_in * l_in) / (3.0 * bending * me)
+    f[4, 4] = (l_in * l_in * l_in) / ((3.0 * me * bending) if modulus_first else (3.0 * bending * me))
     f[5, 5] = l_fol / (ca * me)
     f[6, 6] = l_cpl / (ca * me)
     f[7, 7] = l_cpl / (3.0 * me * mi)
@@ -128,9 +153,14 @@ def deflection(beta: np.ndarray, flex: np.ndarray, load: np.ndarray, quirks: Qui
     return product(left, load[..., :, None], real4)[..., 0]      # MPRD(A,B,R,3,3 or 8,..,1)
 
 
+def cramer_determinant(a, b, c, d, e, f, g, h, i):
+    """R1 of the listings: the determinant of [a b c; d e f; g h i], in their order."""
+    return (a * (e * i - f * h)) - (b * (d * i - f * g)) + (c * (d * h - e * g))
+
+
 def _three_by_three_inverse_rows(a, b, c, d, e, f, g, h, i):
     """Rows f4, f5, f6 of beta by Cramer's rule (eq. 14), in the listing's order."""
-    r = (a * (e * i - f * h)) - (b * (d * i - f * g)) + (c * (d * h - e * g))
+    r = cramer_determinant(a, b, c, d, e, f, g, h, i)
     return np.stack([
         np.stack([((e * i) - (f * h)) / r, ((c * h) - (b * i)) / r, ((b * f) - (c * e)) / r], -1),
         np.stack([((f * g) - (d * i)) / r, ((a * i) - (c * g)) / r, ((c * d) - (a * f)) / r], -1),
@@ -167,14 +197,17 @@ def source_mechanics(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None 
     INTEGER N, Cases II and III in a REAL*4 variable.  ``extra`` also holds the
     crank-pin and follower-pin accelerations ``acc_a``, ``acc_b`` (in/s^2).
     """
-    deg = np.atleast_1d(np.asarray(deg, dtype=np.float64))
+    deg = angles_deg("deg", deg)
+    expect("lengths", lengths, Lengths)
+    expect("quirks", quirks, Quirks)
+    if speed_type not in ("INTEGER", "REAL"):
+        raise ValueError(f"speed_type must be 'INTEGER' or 'REAL', got {speed_type!r}")
     pi = _pi(quirks)
     if alp is None:
         alp = ALP_SOURCE_LISTING if quirks.source_alpha_101 else pi / 3.0
     if rpm is None:
         rpm = 400.0 if quirks.source_rpm_400 else EXAMPLE.rpm
-    if not np.isfinite(rpm) or not np.isfinite(alp):
-        raise ValueError("alp and rpm must be finite")
+    alp, rpm = parameter("alp", alp, largest=None), speed_rpm(rpm)
     if quirks.real4_storage:
         rpm = float(np.trunc(rpm)) if speed_type == "INTEGER" else float(np.float32(rpm))
     l1, l2, l3, l4, l5 = lengths.l1, lengths.l2, lengths.l3, lengths.l4, lengths.l5
@@ -182,7 +215,7 @@ def source_mechanics(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None 
     t2 = input_angles(deg, quirks)
     t3, t4 = half_angle_positions(t2, freudenstein_constants(l1, l3, l4, l5), deg, "source")
     om2 = (2.0 * pi * rpm) / 60.0
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         ctx = np.cos(t4 - t3) / np.sin(t4 - t3)
         xp = (l1 * np.cos(t2)) + (l2 * np.cos(alp + t3))
         yp = (l1 * np.sin(t2)) + (l2 * np.sin(alp + t3))
@@ -208,8 +241,8 @@ def source_mechanics(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None 
         i_len = l2 if quirks.i_coefficient else l3                                    # D015
         i1 = np.sin(t4) * ((i_len * np.cos(t3)) - (l2 * np.cos(alp + t3))) \
             + np.cos(t4) * ((l2 * np.sin(alp + t3)) - (l3 * np.sin(t3)))
-        rows456 = _three_by_three_inverse_rows(np.cos(t2), -np.sin(t2), np.cos(t4), np.sin(t2),
-                                               np.cos(t2), np.sin(t4), g1, h1, i1)
+        abc_def = (np.cos(t2), -np.sin(t2), np.cos(t4), np.sin(t2), np.cos(t2), np.sin(t4))
+        rows456 = _three_by_three_inverse_rows(*abc_def, g1, h1, i1)
         s, c = np.sin(t3 + alp), np.cos(t3 + alp)
         zero, one = np.zeros_like(t2), np.ones_like(t2)
         beta = np.concatenate([
@@ -221,14 +254,14 @@ def source_mechanics(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None 
         ], axis=-2)
     return Mechanics(xp, yp, np.stack([xpa, ypa], -1), beta, (l2, l1, l3, l4),
                      extra={"t2": t2, "t3": t3, "t4": t4, "om2": om2, "om3": om3, "alph3": alph3, "alp": alp,
-                            "ext_angle": t3 + alp,
+                            "ext_angle": t3 + alp, "ctx": ctx, "coefficients": abc_def + (g1, h1, i1),
                             "acc_a": np.stack([xaa, yaa], -1), "acc_b": np.stack([xba, yba], -1)})
 
 
 def case1_deflection(mech: Mechanics, mass_lbf: float, section: Section, quirks: Quirks):
     """dx, dy (in, in the source frame unless D025 is on) and rot (rad) of the path point."""
-    if not np.isfinite(mass_lbf):
-        raise ValueError("mass_lbf must be finite")
+    mass_lbf = weight_lbf("mass_lbf", mass_lbf)
+    expect("section", section, Section)
     flex = flexibility(*mech.flex_lengths, section.as_listing_holds(quirks.real4_storage), quirks)
     with np.errstate(invalid="ignore", over="ignore"):   # singular positions: check_finite reports them
         load = inertia_load(mech.acc[:, 0], mech.acc[:, 1], mass_lbf, quirks)
@@ -245,7 +278,9 @@ def source_case1(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = No
                  section: Section = EXAMPLE.section, quirks: Quirks = PRINTED) -> dict:
     """Case I, source four-bar: coupler point ``xp, yp`` (in), its elastic deflection
     ``dx, dy`` (in) and rotation ``rot`` (rad) over ``deg``; see source_mechanics."""
-    deg = np.atleast_1d(np.asarray(deg, dtype=np.float64))
+    deg = angles_deg("deg", deg)
+    mass_lbf = weight_lbf("mass_lbf", mass_lbf)
+    expect("section", section, Section)
     mech = source_mechanics(deg, lengths, alp, rpm, quirks)
     dx, dy, rot = case1_deflection(mech, mass_lbf, section, quirks)
     out = {"xp": mech.xp, "yp": mech.yp, "dx": dx, "dy": dy, "rot": rot}
@@ -265,29 +300,37 @@ def cognate_mechanics(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None
     crank pin along the cognate's extender (default: the whole extender, CL2); Case III
     uses it for its nodes.  ``extra["ext_angle"]`` is the extender's direction (rad).
     """
-    deg = np.atleast_1d(np.asarray(deg, dtype=np.float64))
+    deg = angles_deg("deg", deg)
+    expect("lengths", lengths, Lengths)
+    expect("quirks", quirks, Quirks)
     real4 = quirks.real4_storage
     pi = _pi(quirks)
     if alp is None:
         alp = pi / 3.0
-    if not np.isfinite(rpm) or not np.isfinite(alp):
-        raise ValueError("alp and rpm must be finite")
+    alp, rpm = parameter("alp", alp, largest=None), speed_rpm(rpm)
+    if extender is not None:
+        extender = parameter("extender", extender, largest=None)
     speed = float(np.float32(rpm)) if real4 else float(rpm)       # S is REAL*4 in the listing
     l1, l2, l3, l4, l5 = lengths.l1, lengths.l2, lengths.l3, lengths.l4, lengths.l5
 
     t2 = input_angles(deg, quirks)
-    t3, _ = half_angle_positions(t2, freudenstein_constants(l1, l3, l4, l5), deg, "source")
-    xp = (l1 * np.cos(t2)) + (l2 * np.cos(alp + t3))
-    yp = (l1 * np.sin(t2)) + (l2 * np.sin(alp + t3))
-
+    source_k = freudenstein_constants(l1, l3, l4, l5)
     cog = Cognate.of(lengths, alp, pi)
+    cognate_k = cog.constants()
+    # The listing tests the source loop, then the cognate's, at each angle before the next.
+    raise_first_assembly_failure(deg, source=cannot_close(t2, source_k), cognate=cannot_close(t2, cognate_k))
+    t3, _ = half_angle_positions(t2, source_k, deg, "source")
+    with np.errstate(invalid="ignore", over="ignore"):
+        xp = (l1 * np.cos(t2)) + (l2 * np.cos(alp + t3))
+        yp = (l1 * np.sin(t2)) + (l2 * np.sin(alp + t3))
+
     cl1, cl2, cl3, cl4, cl5 = cog.cl1, cog.cl2 if extender is None else extender, cog.cl3, cog.cl4, cog.cl5
-    ct3, ct4 = half_angle_positions(t2, cog.constants(), deg, "cognate")
-    gam = cog.calp - ct3
-    xpp = (cl1 * np.cos(t2)) + (cl2 * np.cos(pi - (cog.calp - ct3)))
-    ypp = (cl1 * np.sin(t2)) + (cl2 * np.sin(pi - (cog.calp - ct3)))
+    ct3, ct4 = half_angle_positions(t2, cognate_k, deg, "cognate")
     om2 = (2.0 * pi * speed) / 60.0
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        gam = cog.calp - ct3
+        xpp = (cl1 * np.cos(t2)) + (cl2 * np.cos(pi - (cog.calp - ct3)))
+        ypp = (cl1 * np.sin(t2)) + (cl2 * np.sin(pi - (cog.calp - ct3)))
         om3 = (cl1 * om2 * np.sin(t2 - ct4)) / (cl3 * np.sin(ct3 - ct4))
         om4 = (cl1 * om2 * np.sin(ct3 - t2)) / (cl4 * np.sin(ct4 - ct3))
         aj, bj = cl4 * np.sin(ct4), cl3 * np.sin(ct3)
@@ -324,9 +367,9 @@ def cognate_mechanics(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None
             np.stack([np.stack([-cl2 * s * cctx / cl3, -cl2 * c * cctx / cl3, cctx / cl3], -1),
                       np.stack([-cl2 * s, -cl2 * c, one], -1)], -2),
         ], axis=-2)
-    xdp = store(xpp - cl5, real4).astype(np.float64)                      # XDP is REAL*4
-    cxp = store((xdp * np.cos(-cog.beta)) - (ypp * np.sin(-cog.beta)), real4).astype(np.float64) + l5
-    cyp = (xdp * np.sin(-cog.beta)) + (ypp * np.cos(-cog.beta))
+        xdp = store(xpp - cl5, real4).astype(np.float64)                      # XDP is REAL*4
+        cxp = store((xdp * np.cos(-cog.beta)) - (ypp * np.sin(-cog.beta)), real4).astype(np.float64) + l5
+        cyp = (xdp * np.sin(-cog.beta)) + (ypp * np.cos(-cog.beta))
     return Mechanics(xpp, ypp, np.stack([xpa, ypa], -1), beta, (cl2, cl1, cl3, cl4), -cog.beta,
                      extra={"xp": xp, "yp": yp, "cxp": cxp, "cyp": cyp, "t2": t2, "t3": ct3, "t4": ct4,
                             "om2": om2, "om3": om3, "alph3": alph3, "cognate": cog, "ext_angle": pi - gam})
@@ -338,7 +381,9 @@ def cognate_case1(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = N
     """Case I, crossed coupler cognate: ``xp, yp`` (the source's coupler point as the
     cognate listing computes it), ``cxp, cyp`` (the cognate's, in the source frame),
     ``dx, dy`` (in) and ``rot`` (rad) over ``deg``; see cognate_mechanics."""
-    deg = np.atleast_1d(np.asarray(deg, dtype=np.float64))
+    deg = angles_deg("deg", deg)
+    mass_lbf = weight_lbf("mass_lbf", mass_lbf)
+    expect("section", section, Section)
     mech = cognate_mechanics(deg, lengths, alp, rpm, quirks)
     dx, dy, rot = case1_deflection(mech, mass_lbf, section, quirks)
     out = {"xp": mech.extra["xp"], "yp": mech.extra["yp"], "cxp": mech.extra["cxp"],

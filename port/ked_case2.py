@@ -6,14 +6,18 @@ inertia loads: the extender's mass at the path point (P1, P2), the input link's
 at the crank pin (P4 along, P5 across the link), the follower's at its pin (P6,
 along), the coupler's at the crank pin (P7, along the coupler).
 Masses are density * area * length (density in lbf/in^3, a weight).
-Units: inch, pound-force, second; degrees for ``deg``.
+Units: inch, pound-force, second; degrees for ``deg``.  Arguments and errors as in
+``ked_case1`` (the density, like the section, is the listing's REAL*4 literal).
 """
 from __future__ import annotations
 
+from types import SimpleNamespace
+
 import numpy as np
 
+from ..checks import angles_deg, as_real4, weight_lbf
 from .fourbar import Lengths, check_finite
-from .ked_case1 import (EXAMPLE, GRAVITY_IN, Section, _pi, cognate_mechanics, deflection, flexibility,
+from .ked_case1 import (EXAMPLE, GRAVITY_IN, Section, _pi, cognate_mechanics, deflection, expect, flexibility,
                         source_mechanics)
 from .quirks import PRINTED, Quirks
 from .real4 import store
@@ -67,15 +71,16 @@ def case2_source(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = No
                  rpm: float = EXAMPLE.rpm, density: float = DENSITY,
                  section: Section = EXAMPLE.section, quirks: Quirks = LISTING) -> dict:
     """Case II, source four-bar: ``xp, yp`` (in), ``dx, dy`` (in) and ``rot`` (rad)."""
-    deg = np.atleast_1d(np.asarray(deg, dtype=np.float64))
-    if not np.isfinite(density) or density < 0:
-        raise ValueError(f"density must be finite and >= 0, got {density!r}")
+    deg = angles_deg("deg", deg)
+    density = weight_lbf("density", density)
+    expect("section", section, Section)
+    expect("quirks", quirks, Quirks)
     real4 = quirks.real4_storage
     alp = _pi(quirks) / 3.0 if alp is None else alp
     mech = source_mechanics(deg, lengths, alp, rpm, quirks, speed_type="REAL")
     sec = section.as_listing_holds(real4)
-    dens = float(np.float32(density)) if real4 else float(density)
-    with np.errstate(invalid="ignore", over="ignore"):
+    dens = as_real4("density", density) if real4 else density
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         loads = store(joint_loads(mech, lengths, dens, sec.area, quirks), real4)
         flex = flexibility(lengths.l2, lengths.l1, lengths.l3, lengths.l4, sec, quirks)
         delta = deflection(mech.beta, flex, loads, quirks, right=beta2(mech, quirks))
@@ -93,21 +98,23 @@ def case2_cognate(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = N
     (density * area * CLk) and joints (crank pin A' = CL1 e^{i t2}, follower pin
     B' = A' - CL3 e^{i t3*}), in the cognate's frame.  Returns ``xp, yp`` (source),
     ``cxp, cyp``, ``dx, dy`` (in) and ``rot`` (rad)."""
-    deg = np.atleast_1d(np.asarray(deg, dtype=np.float64))
-    if not np.isfinite(density) or density < 0:
-        raise ValueError(f"density must be finite and >= 0, got {density!r}")
+    deg = angles_deg("deg", deg)
+    density = weight_lbf("density", density)
+    expect("section", section, Section)
+    expect("quirks", quirks, Quirks)
     real4 = quirks.real4_storage
     mech = cognate_mechanics(deg, lengths, alp, rpm, quirks)
     cog, e = mech.extra["cognate"], mech.extra
     om2, om3, alph3, t2, t3 = e["om2"], e["om3"], e["alph3"], e["t2"], e["t3"]
-    xaa, yaa = -(cog.cl1 * np.cos(t2) * om2 * om2), -(cog.cl1 * np.sin(t2) * om2 * om2)
-    xba = xaa + (cog.cl3 * om3 * om3 * np.cos(t3)) + (cog.cl3 * alph3 * np.sin(t3))
-    yba = yaa + (cog.cl3 * om3 * om3 * np.sin(t3)) - (cog.cl3 * alph3 * np.cos(t3))
-    e.update(acc_a=np.stack([xaa, yaa], -1), acc_b=np.stack([xba, yba], -1))
-    cog_lengths = Lengths(cog.cl1, cog.cl2, cog.cl3, cog.cl4, cog.cl5)
     sec = section.as_listing_holds(real4)
-    dens = float(np.float32(density)) if real4 else float(density)
-    with np.errstate(invalid="ignore", over="ignore"):
+    dens = as_real4("density", density) if real4 else density
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        xaa, yaa = -(cog.cl1 * np.cos(t2) * om2 * om2), -(cog.cl1 * np.sin(t2) * om2 * om2)
+        xba = xaa + (cog.cl3 * om3 * om3 * np.cos(t3)) + (cog.cl3 * alph3 * np.sin(t3))
+        yba = yaa + (cog.cl3 * om3 * om3 * np.sin(t3)) - (cog.cl3 * alph3 * np.cos(t3))
+        e.update(acc_a=np.stack([xaa, yaa], -1), acc_b=np.stack([xba, yba], -1))
+        # the cognate's links as they are (a degenerate cognate may have zero or NaN lengths)
+        cog_lengths = SimpleNamespace(l1=cog.cl1, l2=cog.cl2, l3=cog.cl3, l4=cog.cl4, l5=cog.cl5)
         loads = store(joint_loads(mech, cog_lengths, dens, sec.area, quirks), real4)
         flex = flexibility(cog.cl2, cog.cl1, cog.cl3, cog.cl4, sec, quirks)
         delta = deflection(mech.beta, flex, loads, quirks, right=beta2(mech, quirks, cognate=True))

@@ -58,6 +58,8 @@ class Quirks(QuirkSwitches):
     joint_b_acceleration_sign: bool = True  # D032  Case II: +L3*ALPH3*SIN(T3) in B's x-acceleration
     node_mass_from_pin: bool = True      # D033  Case III: node k carries the mass of the extender up to it
     uncoupled_nodes: bool = True         # D034  Case III: block-diagonal beta*, F*: a node feels only its own load
+    tip_rotation_node_2: bool = True     # D035  Case III: block 1's beta* column 3 in block 2's rows (with D034)
+    u470_operands: bool = True           # D036  Case III: U(470)=(A1*D1-B1*..)/R4 for (A1*E1-B1*D1)/R4 (with D034)
 
 
 

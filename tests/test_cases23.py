@@ -31,13 +31,12 @@ def test_case3_cognate_reconstruction_port_equals_legacy():
         np.testing.assert_allclose(port[key], leg[key], rtol=1e-9, atol=1e-300, err_msg=key)
 
 
-def test_case3_port_equals_legacy_for_every_node_deflection():
-    """dx, dy of all five nodes; the rotations differ by the listing's slips D035, D036,
-    which the port does not model (no table prints a rotation)."""
+def test_case3_port_equals_legacy_for_every_node():
+    """dx, dy and the rotation of all five nodes, with the listing's slips D035, D036."""
     port, leg = case3_source(DEG, quirks=CASE3, all_nodes=True), legacy.case3_source(step_deg=1.0)
-    for key in ("xp", "yp", "dx", "dy"):
+    for key in ("xp", "yp", "dx", "dy", "rot"):
         np.testing.assert_allclose(port[key], leg[key], rtol=1e-9, atol=1e-300, err_msg=key)
-    np.testing.assert_allclose(port["nodes"][..., :2], leg["nodes"][..., :2], rtol=1e-9, atol=1e-300)
+    np.testing.assert_allclose(port["nodes"], leg["nodes"], rtol=1e-9, atol=1e-300)
 
 
 def test_case2_with_only_the_path_point_load_is_case1():
