@@ -30,7 +30,7 @@ import threading
 
 import numpy as np
 
-from ..checks import as_real4, parameter, speed_rpm, weight_lbf
+from ..checks import INTEGER_MAX, as_real4, integer, parameter, real4_array, speed_rpm, weight_lbf
 from ..errors import AssemblyError, SingularPositionError
 from . import _ali1977 as _f
 
@@ -200,13 +200,17 @@ def case3_cognate(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_P
 
 def gmtra(a: np.ndarray) -> np.ndarray:
     """SSP GMTRA: transpose an N x M general matrix (REAL*4, column-major storage)."""
-    a = np.asarray(a, dtype=np.float32)
+    a = real4_array("a", a)
     if a.ndim != 2 or a.size == 0:
         raise ValueError("gmtra needs a non-empty 2-D matrix")
     n, m = a.shape
     with FORTRAN_LOCK:
         r = _f.gmtra(a.ravel(order="F"), n, m)
     return r.reshape((m, n), order="F")
+
+
+#: the most elements mprd's result may hold
+MAX_ELEMENTS = 10**8
 
 
 def _storage_length(n: int, mode: int) -> int:
@@ -222,17 +226,15 @@ def mprd(a: np.ndarray, b: np.ndarray, n: int, m: int, l: int, msa: int = 0, msb
     Returns R as a general N x L matrix, or its N diagonal elements when both
     inputs are diagonal (the SSP table in the listing's header).
     """
-    for name, v in (("n", n), ("m", m), ("l", l)):
-        if int(v) < 1:
-            raise ValueError(f"{name} must be >= 1, got {v}")
-    if msa not in (0, 1, 2) or msb not in (0, 1, 2):
-        raise ValueError("storage modes must be 0 (general), 1 (symmetric) or 2 (diagonal)")
+    n, m, l = (integer(name, v) for name, v in (("n", n), ("m", m), ("l", l)))
+    msa, msb = (integer(name, v, 0, 2) for name, v in (("msa", msa), ("msb", msb)))
     if msa and n != m:
         raise ValueError("a symmetric or diagonal A must be square (n == m)")
     if msb and m != l:
         raise ValueError("a symmetric or diagonal B must be square (m == l)")
-    a = np.asarray(a, dtype=np.float32).ravel()
-    b = np.asarray(b, dtype=np.float32).ravel()
+    if n * l > MAX_ELEMENTS:
+        raise ValueError(f"R would hold {n * l} elements; at most {MAX_ELEMENTS} are allowed")
+    a, b = real4_array("a", a).ravel(), real4_array("b", b).ravel()
     need_a = n * m if msa == 0 else _storage_length(n, msa)
     need_b = m * l if msb == 0 else _storage_length(m, msb)
     if a.size != need_a or b.size != need_b:
@@ -240,10 +242,17 @@ def mprd(a: np.ndarray, b: np.ndarray, n: int, m: int, l: int, msa: int = 0, msb
                          f"got {a.size} and {b.size}")
     with FORTRAN_LOCK:
         r = _f.mprd(a, b, n, m, msa, msb, l)
+    if not np.all(np.isfinite(r)):
+        raise ValueError("the product overflows REAL*4 (|R| > 3.4e38)")
     return r if (msa == 2 and msb == 2) else r.reshape((n, l), order="F")
 
 
 def loc(i: int, j: int, n: int, m: int, ms: int) -> int:
-    """SSP LOC: 1-based storage subscript of element (i, j); 0 when not stored."""
+    """SSP LOC: 1-based storage subscript of element (i, j); 0 when not stored.  Every
+    argument an INTEGER; n*m (the storage length) within the INTEGER range."""
+    i, j, n, m = (integer(name, v) for name, v in (("i", i), ("j", j), ("n", n), ("m", m)))
+    ms = integer("ms", ms, 0, 2)
+    if n * m > INTEGER_MAX or i * n > INTEGER_MAX or j * n > INTEGER_MAX:
+        raise ValueError(f"LOC's subscripts overflow the FORTRAN INTEGER for n={n}, m={m}")
     with FORTRAN_LOCK:
         return int(_f.loc(i, j, n, m, ms))

@@ -43,6 +43,35 @@ def as_real4(name: str, value: float, *, positive: bool = False) -> float:
     return held
 
 
+#: the largest FORTRAN INTEGER (INTEGER*4)
+INTEGER_MAX = 2**31 - 1
+
+
+def integer(name: str, value, smallest: int = 1, largest: int = INTEGER_MAX) -> int:
+    """A FORTRAN INTEGER argument: TypeError unless an integer (an integral float is one, a
+    bool is not), ValueError outside smallest..largest."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
+        raise TypeError(f"{name} must be an integer, got {type(value).__name__} {value!r}")
+    if not (math.isfinite(value) and float(value).is_integer()):
+        raise ValueError(f"{name} must be an integer, got {value!r}")
+    if not smallest <= value <= largest:
+        raise ValueError(f"{name} must be from {smallest} to {largest}, got {value!r}")
+    return int(value)
+
+
+def real4_array(name: str, value) -> np.ndarray:
+    """An array of numbers as the listing's REAL*4 holds them: TypeError unless numeric,
+    ValueError if a value is not finite there (NaN, infinity, beyond 3.4e38)."""
+    raw = np.asarray(value)
+    if raw.dtype.kind not in "iuf":
+        raise TypeError(f"{name} must be an array of real numbers, got dtype {raw.dtype}")
+    with np.errstate(over="ignore"):
+        held = raw.astype(np.float32)
+    if not np.all(np.isfinite(held)):
+        raise ValueError(f"{name} must be finite in REAL*4 (|x| < 3.4e38)")
+    return held
+
+
 # Ali (1977): rules of the listings' own variables, shared by the legacy face and the port.
 
 #: The Case I listing keeps the speed in an INTEGER (N=SPEED); the same bound holds for the
