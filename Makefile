@@ -18,6 +18,8 @@ bench: $(VENV)/.installed
 
 fuzz: $(VENV)/.installed
 	$(BIN)/python -m linkrepro.harness.fuzz --calls 10000 --seed 0 --timeout 20 --out out/fuzz.json
+	HYPOTHESIS_PROFILE=thorough $(BIN)/python -m pytest -q tests/test_differential_ali1977.py \
+	  tests/test_differential_rahman.py tests/test_differential_qprog.py
 
 setup: $(VENV)/.installed
 

@@ -43,7 +43,7 @@ from linkrepro.port.cssp_data import QP_BOUNDS, QP_EQUALITIES, QP_ROWS
 CSSP_BOUNDS = np.asarray(QP_BOUNDS, dtype=np.float32).astype(np.float64)
 #: the geometry on which quadprog declares the CSSP's QP inconsistent (issue 11)
 HARD_GEOMETRY = {"a1": 3.157, "a2": 8.373, "a4": 2.506, "alpha4_deg": 248.267, "s1": 0.001}
-#: ten times the examples under HYPOTHESIS_PROFILE=thorough (max_examples 1000 there, 100 by default)
+#: ten times the examples under HYPOTHESIS_PROFILE=thorough (make fuzz; max_examples 1000 there, 100 by default)
 MORE = max(1, settings.default.max_examples // 100)
 
 

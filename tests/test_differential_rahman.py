@@ -27,6 +27,8 @@ from linkrepro.port.gsc_position import BUILD_1996, NEWTON, positions
 
 #: tables: port with the listing's bugs against legacy, relative to each column's largest |value|
 TABLE_RTOL = 1e-12
+#: ten times the examples under HYPOTHESIS_PROFILE=thorough (make fuzz; max_examples 1000 there, 100 by default)
+MORE = max(1, settings.default.max_examples // 100)
 
 
 def real4(x: float) -> float:
@@ -77,7 +79,7 @@ def assert_port_equals_legacy(g: dict) -> tuple:
     return leg, leg_err
 
 
-@settings(max_examples=60)
+@settings(max_examples=60 * MORE)
 @given(geometries())
 @example({"a1": 1.5, "a2": 3.0, "a4": 1.5, "alpha4_deg": 91.0, "s1": 0.0, "rpm": 3000.0})    # quadprog failed
 @example({"a1": 1.5, "a2": 6.0, "a4": 0.0, "alpha4_deg": 0.0, "s1": 1.0, "rpm": 3000.0})     # QP's last bits
@@ -132,7 +134,7 @@ def inverse_inputs(draw):
     return rng.normal(size=(5, 5)) * 10.0 ** rng.integers(-150, 150, size=(5, 1))
 
 
-@settings(max_examples=300)
+@settings(max_examples=300 * MORE)
 @given(inverse_inputs())
 def test_printed_inverse_equals_legacy(s):
     """Same outcome (SingularPositionError where the listing prints MATRIX IS SINGULAR) and the
@@ -180,7 +182,7 @@ def assert_1991_method_is_the_build(inputs: GscInputs) -> str:
     return f"build raises {leg_err[0]}; 1991 sweep {'runs through' if stop is None else 'stops there'}"
 
 
-@settings(max_examples=40)
+@settings(max_examples=40 * MORE)
 @given(example_1991())
 def test_1991_method_is_the_1996_build_first_pass(inputs):
     event(assert_1991_method_is_the_build(inputs))
