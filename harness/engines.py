@@ -13,7 +13,6 @@ import os
 import subprocess
 from pathlib import Path
 
-import numpy as np
 import pandas as pd
 
 ENGINES = ("printed", "legacy", "port_printed", "port_corrected")

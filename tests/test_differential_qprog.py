@@ -24,7 +24,6 @@ child process, so that a regression fails instead of hanging or crashing the tes
 """
 import subprocess
 import sys
-import time
 
 import numpy as np
 import pytest
