@@ -130,7 +130,7 @@ def initial_estimate(c: Constants, real4: bool) -> np.ndarray:
     with np.errstate(invalid="ignore", divide="ignore"):
         square = a2 ** 2 - (a1 + a4) ** 2
         s4 = _powf(square, 0.5) if real4 else float(square) ** 0.5 if square >= 0 else math.nan
-        theta2 = c.pi - np.arctan(np.float64(s4) / np.float64(a4 + a1))   # A4+A1: a REAL*4 sum, IEEE division
+        theta2 = c.pi - math.atan(np.float64(s4) / np.float64(a4 + a1))   # A4+A1 a REAL*4 sum; the C library's atan
     return np.array([theta2, 0.0, 2.0 * c.pi - theta2, 0.0, s4])
 
 

@@ -17,6 +17,7 @@ import numpy as np
 
 from ..checks import parameter
 from ..errors import AssemblyError, SingularPositionError
+from . import libm
 
 @dataclass(frozen=True)
 class Lengths:
@@ -46,7 +47,7 @@ def freudenstein_constants(l1, l3, l4, l5):
 def _half_angle_terms(t2, k):
     """AA..FF of the listings (statements 14-19) and the two discriminants."""
     k1, k2, k3, k4, k5 = k
-    c, s = np.cos(t2), np.sin(t2)
+    c, s = libm.cos(t2), libm.sin(t2)
     with np.errstate(invalid="ignore", over="ignore"):     # constants may be inf/NaN (a degenerate cognate)
         aa = c + k3 - k1 - (k2 * c)
         bb = -2.0 * s
@@ -92,8 +93,8 @@ def half_angle_positions(t2, k, deg, who):
         raise AssemblyError(f"{who}: the four-bar cannot close", float(deg[i]),
                             discriminant=float(min(disc3[i], disc4[i])))
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        t3 = 2.0 * np.arctan((-ee - np.sqrt(disc3)) / (2.0 * dd))
-        t4 = 2.0 * np.arctan((-bb - np.sqrt(disc4)) / (2.0 * aa))
+        t3 = 2.0 * libm.arctan((-ee - np.sqrt(disc3)) / (2.0 * dd))
+        t4 = 2.0 * libm.arctan((-bb - np.sqrt(disc4)) / (2.0 * aa))
     return t3, t4
 
 
@@ -131,14 +132,14 @@ class Cognate:
         # the caller then reports the input angle where the results stop being finite.
         with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
             k = l2 / l3
-            cl4 = np.sqrt((l2 * l2) + (l3 * l3) - (2.0 * l2 * l3 * np.cos(alp)))
+            cl4 = np.sqrt((l2 * l2) + (l3 * l3) - (2.0 * l2 * l3 * libm.cos(alp)))
             cl3 = l4 * cl4 / l3
             cl2 = k * l4
-            cl5 = np.sqrt(((k * l5) * (k * l5)) + (l5 * l5) - (2.0 * l5 * l5 * k * np.cos(alp)))
+            cl5 = np.sqrt(((k * l5) * (k * l5)) + (l5 * l5) - (2.0 * l5 * l5 * k * libm.cos(alp)))
             cl1 = l1 * cl4 / l3
             cbta = ((l3 * l3) + (cl4 * cl4) - (l2 * l2)) / (2.0 * l3 * cl4)
             sbta = np.sqrt(1.0 - cbta * cbta)
-            beta = np.arctan(sbta / cbta)
+            beta = libm.arctan(sbta / cbta)
             calp = pi - (beta + alp)
         return cls(float(cl1), float(cl2), float(cl3), float(cl4), float(cl5), float(beta), float(calp))
 

@@ -33,6 +33,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..checks import angles_deg, as_real4, parameter, speed_rpm, weight_lbf
+from . import libm
 from .fourbar import (Cognate, Lengths, cannot_close, check_finite, freudenstein_constants,
                       half_angle_positions, raise_first_assembly_failure)
 from .quirks import CORRECTED, PRINTED, Quirks
@@ -216,34 +217,34 @@ def source_mechanics(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None 
     t3, t4 = half_angle_positions(t2, freudenstein_constants(l1, l3, l4, l5), deg, "source")
     om2 = (2.0 * pi * rpm) / 60.0
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        ctx = np.cos(t4 - t3) / np.sin(t4 - t3)
-        xp = (l1 * np.cos(t2)) + (l2 * np.cos(alp + t3))
-        yp = (l1 * np.sin(t2)) + (l2 * np.sin(alp + t3))
-        om3 = (l1 * om2 * np.sin(t4 - t3 if quirks.omega3_sign else t4 - t2)) / (l3 * np.sin(t3 - t4))
-        om4 = (l1 * om2 * np.sin(t2 - t3)) / (l4 * np.sin(t4 - t3))
-        aj, bj = l4 * np.sin(t4), l3 * np.sin(t3)
-        cj = (l1 * om2 * om2 * np.cos(t2)) + (l3 * om3 * om3 * np.cos(t3)) - (l4 * om4 * om4 * np.cos(t4))
-        dj, ej = l4 * np.cos(t4), l3 * np.cos(t3)
-        fj = (l4 * om4 * om4 * np.sin(t4)) - (l1 * om2 * om2 * np.sin(t2)) - (l3 * om3 * om3 * np.sin(t3))
+        ctx = libm.cos(t4 - t3) / libm.sin(t4 - t3)
+        xp = (l1 * libm.cos(t2)) + (l2 * libm.cos(alp + t3))
+        yp = (l1 * libm.sin(t2)) + (l2 * libm.sin(alp + t3))
+        om3 = (l1 * om2 * libm.sin(t4 - t3 if quirks.omega3_sign else t4 - t2)) / (l3 * libm.sin(t3 - t4))
+        om4 = (l1 * om2 * libm.sin(t2 - t3)) / (l4 * libm.sin(t4 - t3))
+        aj, bj = l4 * libm.sin(t4), l3 * libm.sin(t3)
+        cj = (l1 * om2 * om2 * libm.cos(t2)) + (l3 * om3 * om3 * libm.cos(t3)) - (l4 * om4 * om4 * libm.cos(t4))
+        dj, ej = l4 * libm.cos(t4), l3 * libm.cos(t3)
+        fj = (l4 * om4 * om4 * libm.sin(t4)) - (l1 * om2 * om2 * libm.sin(t2)) - (l3 * om3 * om3 * libm.sin(t3))
         alph3 = (cj * dj - aj * fj) / (aj * ej - bj * dj)           # input speed constant: ALPH2 = 0
-        xpa = -(l1 * om2 * om2 * np.cos(t2)) - (l2 * om3 * om3 * np.cos(alp + t3)) - (l2 * alph3 * np.sin(alp + t3))
-        ypa = -(l1 * om2 * om2 * np.sin(t2)) + (l2 * alph3 * np.cos(alp + t3)) - (l2 * om3 * om3 * np.sin(alp + t3))
+        xpa = -(l1 * om2 * om2 * libm.cos(t2)) - (l2 * om3 * om3 * libm.cos(alp + t3)) - (l2 * alph3 * libm.sin(alp + t3))
+        ypa = -(l1 * om2 * om2 * libm.sin(t2)) + (l2 * alph3 * libm.cos(alp + t3)) - (l2 * om3 * om3 * libm.sin(alp + t3))
         # Crank pin A and follower pin B (Case II listing, XAA..YBA).
-        xaa, yaa = -(l1 * np.cos(t2) * om2 * om2), -(l1 * np.sin(t2) * om2 * om2)
+        xaa, yaa = -(l1 * libm.cos(t2) * om2 * om2), -(l1 * libm.sin(t2) * om2 * om2)
         b_sign = 1.0 if quirks.joint_b_acceleration_sign else -1.0                    # D032
-        xba = -(l1 * om2 * om2 * np.cos(t2)) - (l3 * om3 * om3 * np.cos(t3)) + b_sign * (l3 * alph3 * np.sin(t3))
-        yba = -(l1 * om2 * om2 * np.sin(t2)) - (l3 * om3 * om3 * np.sin(t3)) + (l3 * alph3 * np.cos(t3))
+        xba = -(l1 * om2 * om2 * libm.cos(t2)) - (l3 * om3 * om3 * libm.cos(t3)) + b_sign * (l3 * alph3 * libm.sin(t3))
+        yba = -(l1 * om2 * om2 * libm.sin(t2)) - (l3 * om3 * om3 * libm.sin(t3)) + (l3 * alph3 * libm.cos(t3))
 
         # Coupler equilibrium, eqs. (10)-(13): P = [a b c; d e f; g h i] (f4, f5, f6).
-        g_trig = np.cos(t2) if quirks.g_coefficient else np.sin(t2)                   # D014
-        g1 = -(l2 * np.cos(alp + t3) * g_trig) + (l2 * np.sin(alp + t3) * np.cos(t2))
-        h1 = -(l2 * np.cos(alp + t3) * np.cos(t2)) - (l2 * np.sin(alp + t3) * np.sin(t2))
+        g_trig = libm.cos(t2) if quirks.g_coefficient else libm.sin(t2)                   # D014
+        g1 = -(l2 * libm.cos(alp + t3) * g_trig) + (l2 * libm.sin(alp + t3) * libm.cos(t2))
+        h1 = -(l2 * libm.cos(alp + t3) * libm.cos(t2)) - (l2 * libm.sin(alp + t3) * libm.sin(t2))
         i_len = l2 if quirks.i_coefficient else l3                                    # D015
-        i1 = np.sin(t4) * ((i_len * np.cos(t3)) - (l2 * np.cos(alp + t3))) \
-            + np.cos(t4) * ((l2 * np.sin(alp + t3)) - (l3 * np.sin(t3)))
-        abc_def = (np.cos(t2), -np.sin(t2), np.cos(t4), np.sin(t2), np.cos(t2), np.sin(t4))
+        i1 = libm.sin(t4) * ((i_len * libm.cos(t3)) - (l2 * libm.cos(alp + t3))) \
+            + libm.cos(t4) * ((l2 * libm.sin(alp + t3)) - (l3 * libm.sin(t3)))
+        abc_def = (libm.cos(t2), -libm.sin(t2), libm.cos(t4), libm.sin(t2), libm.cos(t2), libm.sin(t4))
         rows456 = _three_by_three_inverse_rows(*abc_def, g1, h1, i1)
-        s, c = np.sin(t3 + alp), np.cos(t3 + alp)
+        s, c = libm.sin(t3 + alp), libm.cos(t3 + alp)
         zero, one = np.zeros_like(t2), np.ones_like(t2)
         beta = np.concatenate([
             np.stack([np.stack([c, s, zero], -1), np.stack([-s, c, zero], -1),
@@ -269,7 +270,7 @@ def case1_deflection(mech: Mechanics, mass_lbf: float, section: Section, quirks:
     dx, dy = delta[:, 0].astype(np.float64), delta[:, 1].astype(np.float64)
     if mech.frame_angle and not quirks.cognate_frame:       # D025: into the source frame
         turn = mech.frame_angle
-        dx, dy = dx * np.cos(turn) - dy * np.sin(turn), dx * np.sin(turn) + dy * np.cos(turn)
+        dx, dy = dx * libm.cos(turn) - dy * libm.sin(turn), dx * libm.sin(turn) + dy * libm.cos(turn)
     return dx, dy, delta[:, 2].astype(np.float64)
 
 
@@ -321,44 +322,44 @@ def cognate_mechanics(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None
     raise_first_assembly_failure(deg, source=cannot_close(t2, source_k), cognate=cannot_close(t2, cognate_k))
     t3, _ = half_angle_positions(t2, source_k, deg, "source")
     with np.errstate(invalid="ignore", over="ignore"):
-        xp = (l1 * np.cos(t2)) + (l2 * np.cos(alp + t3))
-        yp = (l1 * np.sin(t2)) + (l2 * np.sin(alp + t3))
+        xp = (l1 * libm.cos(t2)) + (l2 * libm.cos(alp + t3))
+        yp = (l1 * libm.sin(t2)) + (l2 * libm.sin(alp + t3))
 
     cl1, cl2, cl3, cl4, cl5 = cog.cl1, cog.cl2 if extender is None else extender, cog.cl3, cog.cl4, cog.cl5
     ct3, ct4 = half_angle_positions(t2, cognate_k, deg, "cognate")
     om2 = (2.0 * pi * speed) / 60.0
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         gam = cog.calp - ct3
-        xpp = (cl1 * np.cos(t2)) + (cl2 * np.cos(pi - (cog.calp - ct3)))
-        ypp = (cl1 * np.sin(t2)) + (cl2 * np.sin(pi - (cog.calp - ct3)))
-        om3 = (cl1 * om2 * np.sin(t2 - ct4)) / (cl3 * np.sin(ct3 - ct4))
-        om4 = (cl1 * om2 * np.sin(ct3 - t2)) / (cl4 * np.sin(ct4 - ct3))
-        aj, bj = cl4 * np.sin(ct4), cl3 * np.sin(ct3)
-        cj = -(cl1 * om2 * om2 * np.cos(t2)) + (cl3 * om3 * om3 * np.cos(ct3)) - (cl4 * om4 * om4 * np.cos(ct4))
-        dj, ej = cl4 * np.cos(ct4), cl3 * np.cos(ct3)
-        fj = (cl1 * om2 * om2 * np.sin(t2)) - (cl3 * om3 * om3 * np.sin(ct3)) + (cl4 * om4 * om4 * np.sin(ct4))
+        xpp = (cl1 * libm.cos(t2)) + (cl2 * libm.cos(pi - (cog.calp - ct3)))
+        ypp = (cl1 * libm.sin(t2)) + (cl2 * libm.sin(pi - (cog.calp - ct3)))
+        om3 = (cl1 * om2 * libm.sin(t2 - ct4)) / (cl3 * libm.sin(ct3 - ct4))
+        om4 = (cl1 * om2 * libm.sin(ct3 - t2)) / (cl4 * libm.sin(ct4 - ct3))
+        aj, bj = cl4 * libm.sin(ct4), cl3 * libm.sin(ct3)
+        cj = -(cl1 * om2 * om2 * libm.cos(t2)) + (cl3 * om3 * om3 * libm.cos(ct3)) - (cl4 * om4 * om4 * libm.cos(ct4))
+        dj, ej = cl4 * libm.cos(ct4), cl3 * libm.cos(ct3)
+        fj = (cl1 * om2 * om2 * libm.sin(t2)) - (cl3 * om3 * om3 * libm.sin(ct3)) + (cl4 * om4 * om4 * libm.sin(ct4))
         alph3 = (cj * dj - aj * fj) / (aj * ej - bj * dj)
-        xpa = -(cl1 * om2 * om2 * np.cos(t2)) + (cl2 * om3 * om3 * np.cos(gam)) - (cl2 * alph3 * np.sin(gam))
-        ypa = -(cl1 * om2 * om2 * np.sin(t2)) - (cl2 * om3 * om3 * np.sin(gam)) - (cl2 * alph3 * np.cos(gam))
+        xpa = -(cl1 * om2 * om2 * libm.cos(t2)) + (cl2 * om3 * om3 * libm.cos(gam)) - (cl2 * alph3 * libm.sin(gam))
+        ypa = -(cl1 * om2 * om2 * libm.sin(t2)) - (cl2 * om3 * om3 * libm.sin(gam)) - (cl2 * alph3 * libm.cos(gam))
 
         # Coupler equilibrium of the crossed cognate, eqs. (20)-(24): the pin forces
         # f4, f5 act at A along (-cos t2, -sin t2), (sin t2, -cos t2); f6 at B along
         # (cos t4, sin t4); the loop is CL1 e^{i t2} - CL3 e^{i t3} + CL4 e^{i t4} = CL5.
         if quirks.cognate_moment_row:                                                  # D026
-            g1 = (cl2 * np.cos(t2) * np.sin(gam)) + (cl2 * np.sin(t2) * np.cos(gam))
-            h1 = (cl2 * np.cos(t2) * np.cos(gam)) - (cl2 * np.sin(t2) * np.sin(gam))
-            i1 = (cl2 * np.cos(t2) * np.sin(gam)) + (cl3 * np.cos(ct3) * np.cos(ct4)) \
-                + (cl2 * np.sin(ct4) * np.cos(gam)) + (cl3 * np.sin(ct4) * np.sin(ct3))
+            g1 = (cl2 * libm.cos(t2) * libm.sin(gam)) + (cl2 * libm.sin(t2) * libm.cos(gam))
+            h1 = (cl2 * libm.cos(t2) * libm.cos(gam)) - (cl2 * libm.sin(t2) * libm.sin(gam))
+            i1 = (cl2 * libm.cos(t2) * libm.sin(gam)) + (cl3 * libm.cos(ct3) * libm.cos(ct4)) \
+                + (cl2 * libm.sin(ct4) * libm.cos(gam)) + (cl3 * libm.sin(ct4) * libm.sin(ct3))
         else:   # moments about P, (pin - P) x direction, as rows 7-8 take them
-            ax, ay = cl2 * np.cos(gam), -cl2 * np.sin(gam)                 # A - P
-            bx, by = ax - cl3 * np.cos(ct3), ay - cl3 * np.sin(ct3)        # B - P
-            g1 = -ax * np.sin(t2) + ay * np.cos(t2)
-            h1 = -ax * np.cos(t2) - ay * np.sin(t2)
-            i1 = bx * np.sin(ct4) - by * np.cos(ct4)
-        rows456 = _three_by_three_inverse_rows(-np.cos(t2), np.sin(t2), np.cos(ct4), -np.sin(t2),
-                                               -np.cos(t2), np.sin(ct4), g1, h1, i1)
-        cctx = np.cos(ct3 - ct4) / np.sin(ct3 - ct4)
-        s, c = np.sin(gam), np.cos(gam)
+            ax, ay = cl2 * libm.cos(gam), -cl2 * libm.sin(gam)                 # A - P
+            bx, by = ax - cl3 * libm.cos(ct3), ay - cl3 * libm.sin(ct3)        # B - P
+            g1 = -ax * libm.sin(t2) + ay * libm.cos(t2)
+            h1 = -ax * libm.cos(t2) - ay * libm.sin(t2)
+            i1 = bx * libm.sin(ct4) - by * libm.cos(ct4)
+        rows456 = _three_by_three_inverse_rows(-libm.cos(t2), libm.sin(t2), libm.cos(ct4), -libm.sin(t2),
+                                               -libm.cos(t2), libm.sin(ct4), g1, h1, i1)
+        cctx = libm.cos(ct3 - ct4) / libm.sin(ct3 - ct4)
+        s, c = libm.sin(gam), libm.cos(gam)
         zero, one = np.zeros_like(t2), np.ones_like(t2)
         beta = np.concatenate([
             np.stack([np.stack([-c, s, zero], -1), np.stack([-s, -c, zero], -1),
@@ -368,8 +369,8 @@ def cognate_mechanics(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None
                       np.stack([-cl2 * s, -cl2 * c, one], -1)], -2),
         ], axis=-2)
         xdp = store(xpp - cl5, real4).astype(np.float64)                      # XDP is REAL*4
-        cxp = store((xdp * np.cos(-cog.beta)) - (ypp * np.sin(-cog.beta)), real4).astype(np.float64) + l5
-        cyp = (xdp * np.sin(-cog.beta)) + (ypp * np.cos(-cog.beta))
+        cxp = store((xdp * libm.cos(-cog.beta)) - (ypp * libm.sin(-cog.beta)), real4).astype(np.float64) + l5
+        cyp = (xdp * libm.sin(-cog.beta)) + (ypp * libm.cos(-cog.beta))
     return Mechanics(xpp, ypp, np.stack([xpa, ypa], -1), beta, (cl2, cl1, cl3, cl4), -cog.beta,
                      extra={"xp": xp, "yp": yp, "cxp": cxp, "cyp": cyp, "t2": t2, "t3": ct3, "t4": ct4,
                             "om2": om2, "om3": om3, "alph3": alph3, "cognate": cog, "ext_angle": pi - gam})

@@ -16,6 +16,7 @@ from types import SimpleNamespace
 import numpy as np
 
 from ..checks import angles_deg, as_real4, weight_lbf
+from . import libm
 from .fourbar import Lengths, check_finite
 from .ked_case1 import (EXAMPLE, GRAVITY_IN, Section, _pi, cognate_mechanics, deflection, expect, flexibility,
                         source_mechanics)
@@ -39,8 +40,8 @@ def beta2(mech, quirks: Quirks, cognate: bool = False) -> np.ndarray:
     n = len(t2)
     extra = np.zeros((n, 8, 5))
     extra[:, 3, 0] = extra[:, 4, 1] = extra[:, 5, 2] = extra[:, 6, 3] = extra[:, 7, 4] = 1.0
-    extra[:, 3, 3] = np.cos(t3 - t2) if cognate else -np.cos(t2 - t3)
-    extra[:, 4, 3] = np.sin(t3 - t2) if cognate else np.sin(t2 - t3)
+    extra[:, 3, 3] = libm.cos(t3 - t2) if cognate else -libm.cos(t2 - t3)
+    extra[:, 4, 3] = libm.sin(t3 - t2) if cognate else libm.sin(t2 - t3)
     return np.concatenate([mech.beta, extra], axis=-1)
 
 
@@ -53,16 +54,16 @@ def joint_loads(mech, lengths: Lengths, density: float, area: float, quirks: Qui
     g_const = float(np.float32(32.178) * np.float32(12.0)) if real4 else GRAVITY_IN
     xpa, ypa = (store(a, real4).astype(np.float64) for a in mech.acc.T)        # XPA, YPA are REAL*4
     if quirks.joint_load_components:                                            # D031
-        p5 = m1 * (yaa * np.sin(t2) - xaa * np.cos(t2))
-        p6 = m4 * (yba * np.sin(t4) - xba * np.cos(t4))
-        p7 = m3 * (yaa * np.sin(t3) - xaa * np.cos(t3))
+        p5 = m1 * (yaa * libm.sin(t2) - xaa * libm.cos(t2))
+        p6 = m4 * (yba * libm.sin(t4) - xba * libm.cos(t4))
+        p7 = m3 * (yaa * libm.sin(t3) - xaa * libm.cos(t3))
     else:   # along the element coordinates: f5 across the crank, f6 along the follower, -e3 (eq. 30)
-        p5 = m1 * (-xaa * np.sin(t2) + yaa * np.cos(t2))
-        p6 = m4 * (xba * np.cos(t4) + yba * np.sin(t4))
-        p7 = m3 * (-xaa * np.cos(t3) - yaa * np.sin(t3))
+        p5 = m1 * (-xaa * libm.sin(t2) + yaa * libm.cos(t2))
+        p6 = m4 * (xba * libm.cos(t4) + yba * libm.sin(t4))
+        p7 = m3 * (-xaa * libm.cos(t3) - yaa * libm.sin(t3))
     zero = np.zeros_like(t2)
     loads = np.stack([(m2 * xpa) / g_const, (m2 * ypa) / g_const, zero,
-                      (m1 * (xaa * np.cos(t2) + yaa * np.sin(t2))) / g_const,
+                      (m1 * (xaa * libm.cos(t2) + yaa * libm.sin(t2))) / g_const,
                       p5 / g_const, p6 / g_const, p7 / g_const, zero], axis=-1)
     return loads if quirks.inertia_sign else -loads                              # D018
 
@@ -109,9 +110,9 @@ def case2_cognate(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = N
     sec = section.as_listing_holds(real4)
     dens = as_real4("density", density) if real4 else density
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        xaa, yaa = -(cog.cl1 * np.cos(t2) * om2 * om2), -(cog.cl1 * np.sin(t2) * om2 * om2)
-        xba = xaa + (cog.cl3 * om3 * om3 * np.cos(t3)) + (cog.cl3 * alph3 * np.sin(t3))
-        yba = yaa + (cog.cl3 * om3 * om3 * np.sin(t3)) - (cog.cl3 * alph3 * np.cos(t3))
+        xaa, yaa = -(cog.cl1 * libm.cos(t2) * om2 * om2), -(cog.cl1 * libm.sin(t2) * om2 * om2)
+        xba = xaa + (cog.cl3 * om3 * om3 * libm.cos(t3)) + (cog.cl3 * alph3 * libm.sin(t3))
+        yba = yaa + (cog.cl3 * om3 * om3 * libm.sin(t3)) - (cog.cl3 * alph3 * libm.cos(t3))
         e.update(acc_a=np.stack([xaa, yaa], -1), acc_b=np.stack([xba, yba], -1))
         # the cognate's links as they are (a degenerate cognate may have zero or NaN lengths)
         cog_lengths = SimpleNamespace(l1=cog.cl1, l2=cog.cl2, l3=cog.cl3, l4=cog.cl4, l5=cog.cl5)
@@ -120,7 +121,7 @@ def case2_cognate(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = N
         delta = deflection(mech.beta, flex, loads, quirks, right=beta2(mech, quirks, cognate=True))
     dx, dy = delta[:, 0].astype(np.float64), delta[:, 1].astype(np.float64)
     if not quirks.cognate_frame:                                                     # D025
-        c, s = np.cos(mech.frame_angle), np.sin(mech.frame_angle)
+        c, s = libm.cos(mech.frame_angle), libm.sin(mech.frame_angle)
         dx, dy = dx * c - dy * s, dx * s + dy * c
     out = {"xp": e["xp"], "yp": e["yp"], "cxp": e["cxp"], "cyp": e["cyp"], "dx": dx, "dy": dy,
            "rot": delta[:, 2].astype(np.float64)}

@@ -22,6 +22,7 @@ from types import SimpleNamespace
 import numpy as np
 
 from ..checks import angles_deg, as_real4, parameter, weight_lbf
+from . import libm
 from .fourbar import Lengths, check_finite
 from .ked_case1 import (EXAMPLE, GRAVITY_IN, Section, _pi, cognate_mechanics, cramer_determinant, deflection,
                         expect, flexibility, source_mechanics)
@@ -100,7 +101,7 @@ def _coupled_tip(mechs, loads, positions, lengths: Lengths, section: Section, qu
     seg = np.diff(np.concatenate([[0.0], r]))                 # segment lengths
     tip = mechs[int(np.argmax(positions))]
     t = tip.extra["ext_angle"]
-    c, s = np.cos(t), np.sin(t)
+    c, s = libm.cos(t), libm.sin(t)
     loads = loads[ascending]                                  # (n, N, 3)
     axial = loads[..., 0] * c + loads[..., 1] * s             # (n, N)
     shear = -loads[..., 0] * s + loads[..., 1] * c
@@ -137,7 +138,7 @@ def _listing_blocks(mechs, quirks: Quirks):
     for k, mech in enumerate(mechs):
         e = mech.extra
         r, l3 = mech.flex_lengths[0], mech.flex_lengths[2]
-        ctx, s, c = e["ctx"], np.sin(e["ext_angle"]), np.cos(e["ext_angle"])
+        ctx, s, c = e["ctx"], libm.sin(e["ext_angle"]), libm.cos(e["ext_angle"])
         left, right = mech.beta.copy(), mech.beta.copy()
         left[:, 6, 0] = ((ctx * s) * r) / l3                  # U(7)=CTX*DSIN(T3+ALP)*L2/L3 (... L21/L3)
         if k:
@@ -248,7 +249,7 @@ def case3_cognate(deg, n: int = 5, lengths: Lengths = EXAMPLE.lengths, alp: floa
     mech = tip_mech
     dx, dy = delta[:, 0].astype(np.float64), delta[:, 1].astype(np.float64)
     if not quirks.cognate_frame:                                                     # D025
-        c, s = np.cos(mech.frame_angle), np.sin(mech.frame_angle)
+        c, s = libm.cos(mech.frame_angle), libm.sin(mech.frame_angle)
         dx, dy = dx * c - dy * s, dx * s + dy * c
     out = {"xp": mech.extra["xp"], "yp": mech.extra["yp"], "cxp": mech.extra["cxp"], "cyp": mech.extra["cyp"],
            "dx": dx, "dy": dy, "rot": delta[:, 2].astype(np.float64)}
