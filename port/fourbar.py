@@ -19,6 +19,7 @@ from ..checks import parameter
 from ..errors import AssemblyError, SingularPositionError
 from . import libm
 
+
 @dataclass(frozen=True)
 class Lengths:
     """Link lengths (in): input, extender, coupler, follower, ground."""
