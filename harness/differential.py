@@ -65,6 +65,7 @@ def port_against_legacy(geometries: list[dict]) -> tuple[collections.Counter, fl
 
 
 def one_ulp_up(x: float) -> float:
+    """The next REAL*4 number above x (the build's arguments are REAL*4)."""
     return float(np.nextafter(np.float32(x), np.float32(np.inf)))
 
 

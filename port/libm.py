@@ -1,7 +1,7 @@
-"""sin, cos, tan, arctan and arctan2 of the C library, as numpy ufuncs (compiled by numba).
+"""sin, cos and arctan of the C library, as numpy ufuncs (compiled by numba).
 
-The listings call DSIN, DCOS, DTAN, DATAN, DATAN2, which gfortran compiles to calls of the C
-library (glibc's sin, cos, ...).  numpy computes these functions itself, and on some CPUs
+The listings call DSIN, DCOS and DATAN, which gfortran compiles to calls of the C library
+(glibc's sin, cos, atan).  numpy computes these functions itself, and on some CPUs
 (AVX-512) with SIMD code that can differ from the C library's in the last bits; where the
 port must round as the FORTRAN does, it calls these instead.  They behave as numpy's ufuncs:
 arrays broadcast, a scalar gives a numpy scalar.  Arguments in radians.
@@ -24,15 +24,5 @@ def cos(x):
 
 
 @vectorize(["float64(float64)"], cache=True)
-def tan(x):
-    return math.tan(x)
-
-
-@vectorize(["float64(float64)"], cache=True)
 def arctan(x):
     return math.atan(x)
-
-
-@vectorize(["float64(float64, float64)"], cache=True)
-def arctan2(y, x):
-    return math.atan2(y, x)

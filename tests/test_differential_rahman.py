@@ -19,6 +19,7 @@ from hypothesis import strategies as st
 
 from linkrepro import legacy
 from linkrepro.errors import LinkageError, QPError, SingularPositionError
+from linkrepro.harness.differential import one_ulp_up
 from linkrepro.port.cssp import CSSP_PRINTED, CRANK_DEG, _listing_motions, balance
 from linkrepro.port.cssp_data import Constants, CsspInputs
 from linkrepro.port.cssp_listing import printed_inverse
@@ -98,11 +99,6 @@ def test_the_issues_diverging_geometries():
               {"a1": 2.087, "a2": 4.206, "a4": -0.581, "alpha4_deg": 73.244, "s1": -0.475},
               {"a1": 0.72, "a2": 10.429, "a4": -2.013, "alpha4_deg": 135.053, "s1": -0.367}):
         assert_port_equals_legacy(g)
-
-
-def one_ulp_up(x: float) -> float:
-    """The next REAL*4 number above x (the build's arguments are REAL*4)."""
-    return float(np.nextafter(np.float32(x), np.float32(np.inf)))
 
 
 def test_chaotic_inputs_move_legacy_itself_and_the_port_follows():
