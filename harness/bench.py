@@ -8,12 +8,10 @@ from __future__ import annotations
 import time
 
 import numpy as np
-import pandas as pd
 
 from .. import legacy
-from ..port import CORRECTED, PRINTED, cognate_case1, source_case1
-from ..port.ked_case3 import LISTING as CASE3_LISTING
-from ..port.ked_case3 import case3_source
+from ..port import PRINTED, cognate_case1, source_case1
+from .case3_convergence import case3_sweep
 from .published_tables import PublishedTable
 from .scenes import get
 
@@ -164,96 +162,3 @@ def _cells_matched(tables: dict) -> int:
             err = np.abs(frame[col].to_numpy(float) - published.values[col].to_numpy(float))
             count += int(np.sum(err <= published.half_unit[col].to_numpy(float) * (1 + 1e-9)))
     return count
-
-
-CASE3_NS = (1, 2, 5, 10, 20, 50, 100, 200)
-CASE3_STEPS = (20.0, 10.0, 1.0)
-
-
-def case3_data(repeat: int, reference_n: int = 3200) -> pd.DataFrame:
-    """Case III sweep: one row per (angle step, n) with the coupled and the listing's model:
-    time (s, best of ``repeat``) and max |tip dx, dy - converged| (in).  Converged: the
-    coupled model at reference_n/2 and reference_n, Richardson-extrapolated (the node-end
-    lumping is first order: 2 d(2n) - d(n))."""
-    rows = []
-    listing_q = CASE3_LISTING.without("real4_storage")
-    for step in CASE3_STEPS:
-        deg = np.arange(0.0, 360.0 + 1e-9, step)
-        fine = case3_source(deg, n=reference_n, quirks=CORRECTED)
-        half = case3_source(deg, n=reference_n // 2, quirks=CORRECTED)
-        converged = {k: 2 * fine[k] - half[k] for k in ("dx", "dy")}
-        t_leg = _best(lambda: legacy.case3_source(step_deg=step), repeat)
-        for n in CASE3_NS:
-            for model, quirks in (("coupled", CORRECTED), ("listing", listing_q)):
-                seconds = _best(lambda: case3_source(deg, n=n, quirks=quirks), repeat)
-                got = case3_source(deg, n=n, quirks=quirks)
-                err = max(float(np.max(np.abs(got[k] - converged[k]))) for k in ("dx", "dy"))
-                rows.append({"step_deg": step, "n": n, "model": model, "seconds": seconds, "error_in": err,
-                             "legacy_seconds_n5": t_leg if n == 5 else np.nan})
-    return pd.DataFrame(rows)
-
-
-def case3_sweep(repeat: int, data: pd.DataFrame | None = None) -> list[str]:
-    """The sweep as markdown, and which model each table needs."""
-    data = case3_data(max(1, repeat // 10)) if data is None else data
-    lines = ["", "## Case III: sub-elements n and angle step, against the converged tip deflection", "",
-             "Error: max |tip dx, dy - converged| (in) over 0-360 at the step; converged = Richardson "
-             "extrapolation of the coupled model at n = 1600, 3200. Port timed for every n; legacy (the "
-             "listing, n = 5, uncoupled) where the printed structure allows.", "",
-             "| step (deg) | n | coupled port s | coupled error (in) | listing-model port s | listing-model error (in) | legacy s (n=5) |",
-             "|---|---|---|---|---|---|---|"]
-    for (step, n), g in data.groupby(["step_deg", "n"], sort=False):
-        c, li = g[g["model"] == "coupled"].iloc[0], g[g["model"] == "listing"].iloc[0]
-        leg = f"{c.legacy_seconds_n5:.5f}" if n == 5 else ""
-        lines.append(f"| {step:g} | {n} | {c.seconds:.5f} | {c.error_in:.2e} | {li.seconds:.5f} | "
-                     f"{li.error_in:.2e} | {leg} |")
-    lines += ["", "The listing's model keeps the tip's own load only (D034) and lumps the extender up to each "
-              "node (D033): its tip deflection does not depend on n, and its error against the converged "
-              "coupled model does not shrink as n grows.", ""]
-    lines += table_model_needs()
-    return lines
-
-
-def plot_case3(data: pd.DataFrame, path) -> None:
-    """Error against n and against time, per angle step and model."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    fig, (left, right) = plt.subplots(1, 2, figsize=(10, 3.8))
-    for (step, model), g in data.groupby(["step_deg", "model"]):
-        style = "-o" if model == "coupled" else "--x"
-        left.loglog(g["n"], g["error_in"], style, ms=3, label=f"{model}, {step:g} deg")
-        right.loglog(g["seconds"], g["error_in"], style, ms=3, label=f"{model}, {step:g} deg")
-    for ax, xlabel in ((left, "sub-elements n"), (right, "port time (s)")):
-        ax.axhline(0.0005, color="gray", lw=0.8, ls=":")
-        ax.set_ylim(bottom=1e-4)
-        ax.set_xlabel(xlabel)
-        ax.set_ylabel("max tip error (in)")
-        ax.grid(alpha=0.3, which="both")
-    left.legend(fontsize=7)
-    left.set_title("Case III: error against n (dotted: printed half unit)", fontsize=9)
-    right.set_title("Case III: error against time", fontsize=9)
-    fig.tight_layout()
-    fig.savefig(path, dpi=90)
-    plt.close(fig)
-
-
-def table_model_needs() -> list[str]:
-    """For each published table: how far its mass model (with the listings' other quirks
-    removed) is from the converged distributed-mass answer, against its half unit."""
-    deg = np.arange(0.0, 341.0, 20.0)
-    fine = case3_source(deg, n=1600, quirks=CORRECTED)
-    half = case3_source(deg, n=800, quirks=CORRECTED)
-    converged = {k: 2 * fine[k] - half[k] for k in ("dx", "dy")}
-    candidates = [("Case I (2 lbf at the path point)", source_case1(deg, rpm=300.0, quirks=CORRECTED)),
-                  ("Case I with the extender's weight at the path point",
-                   source_case1(deg, rpm=300.0, mass_lbf=0.098 * 0.1963495408 * 10.0, quirks=CORRECTED))]
-    candidates += [(f"Case III coupled, n = {n}", case3_source(deg, n=n, quirks=CORRECTED))
-                   for n in (1, 5, 10, 20, 50, 100, 200, 400)]
-    lines = ["## Which model is within the printed precision (0.0005 in) of the converged answer", "",
-             "Source four-bar, rows 0-340, every listing bug removed (CORRECTED), the extender's own "
-             "distributed weight as the load.", "", "| model | max abs error (in) | within 0.0005 in |", "|---|---|---|"]
-    for label, out in candidates:
-        err = max(float(np.max(np.abs(out[k] - converged[k]))) for k in ("dx", "dy"))
-        lines.append(f"| {label} | {err:.2e} | {'yes' if err <= 0.0005 else 'no'} |")
-    return lines

@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pandas as pd
 
-from . import appendix, bench, rahman1991, rahman1996_figures, readings, register as register_mod
+from . import appendix, case3_convergence, rahman1991, rahman1996_figures, readings, register as register_mod
 from .diff import diff_scene, summary
 from .engines import ENGINES, PrintedProgramError
 from .published_tables import PublishedTable
@@ -138,11 +138,11 @@ def reproduce(names: list[str] | None, out_dir: Path, measure_readings: bool = T
             lines.append(f"| {engine} | " + " | ".join(str(v) for v in row) + f" | {secs:.4f} |")
         lines += [f"\n**{f}**" for f in item["failures"]] + [""]
     if measure_convergence:
-        data = bench.case3_data(repeat=1)
+        data = case3_convergence.case3_data(repeat=1)
         data.to_csv(out_dir / "case3_convergence.csv", index=False, float_format="%.6g")
-        bench.plot_case3(data, out_dir / "case3_convergence.png")
+        case3_convergence.plot_case3(data, out_dir / "case3_convergence.png")
         (out_dir / "case3_convergence.md").write_text(
-            "# Case III: speed against error\n" + "\n".join(bench.case3_sweep(1, data))
+            "# Case III: speed against error\n" + "\n".join(case3_convergence.case3_sweep(1, data))
             + "\n\n![case3 convergence](case3_convergence.png)\n")
         lines += ["## [Case III: speed against error](case3_convergence.md)", "",
                   "Sub-elements n and angle step against the converged distributed-mass answer, and which "

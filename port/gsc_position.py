@@ -54,6 +54,8 @@ class NewtonSetup:
     real4: bool = False            # lengths, pi and the tolerance 1e-7 as REAL*4 holds them
     printed_inverse: bool = False  # A'A inverted by the 1996 listing's INVERSE, else by LU
     check_assembly: bool = True    # skip the angles where the rod cannot reach the slider axis
+    tol: float | None = None       # stop when every |Delta| <= tol; None: the 1996 listing's 1e-7
+    max_iterations: int = kernel.MAX_ITERATIONS   # Newton evaluations before a position fails
 
 
 #: the port of the 1991 method (double precision, LU, assembly checked first)
@@ -91,12 +93,13 @@ def residual(theta1: float, q: np.ndarray, c: Constants) -> tuple[np.ndarray, np
     return r, np.concatenate([hb.real.reshape(5, 9), hb.dual.reshape(5, 9)], axis=1).T
 
 
-def newton(theta1: float, q: np.ndarray, c: Constants, printed_inverse: bool = False) -> tuple[np.ndarray, bool, int]:
+def newton(theta1: float, q: np.ndarray, c: Constants, setup: NewtonSetup = THESIS_1991) -> tuple[np.ndarray, bool, int]:
     """The printed iteration from q (5,) at one crank angle (rad): (answer, converged, steps).
-    Every |Delta| <= c.newton_tol (1e-7) stops it, 150 steps fail it; a singular A'A or a
-    non-finite step fails at once (the iteration cannot recover)."""
+    Every |Delta| <= tol (c.newton_tol, 1e-7, unless the setup says) stops it, 150 steps
+    (setup.max_iterations) fail it; a singular A'A or a non-finite step fails at once."""
+    tol = c.newton_tol if setup.tol is None else setup.tol
     q, status, steps = kernel.newton(float(theta1), np.asarray(q, dtype=float), c.a1, c.a2, c.a4, c.alpha4,
-                                     c.s1, c.newton_tol, kernel.MAX_ITERATIONS, printed_inverse)
+                                     c.s1, tol, setup.max_iterations, setup.printed_inverse)
     return q, status == kernel.OK, int(steps)
 
 
@@ -149,11 +152,11 @@ def positions(inputs: GscInputs, theta1, use_dfp: bool = True, stop_at_failure: 
                     break
                 continue
             c = constants(inputs, s1[i], setup.real4)
-            q, done, steps[i] = newton(th[i], guess, c, setup.printed_inverse)
+            q, done, steps[i] = newton(th[i], guess, c, setup)
             if done:
                 status[i] = NEWTON
             elif use_dfp and (i == 0 or status[i - 1] != NOT_CONVERGED):   # DFP only after a converged position
-                q, done, steps[i] = newton(th[i], dfp(th[i], guess, c), c, setup.printed_inverse)
+                q, done, steps[i] = newton(th[i], dfp(th[i], guess, c), c, setup)
                 status[i] = DFP_THEN_NEWTON if done else NOT_CONVERGED
             if done:
                 q_out[i], guess = q, q
