@@ -2,9 +2,9 @@
 
 ``python -m linkrepro.harness.compare_runs BEFORE AFTER [--tol 1e-12]`` reads every CSV of
 both folders.  Text columns (statuses, verdicts, register ids) must be equal; numeric
-columns must agree to ``tol`` relative to the column's largest magnitude in BEFORE (a
-column of round-off, such as a closure error, is compared to its own scale), with NaN equal
-to NaN.  Columns that hold timings (their name contains "seconds" or "time") are not
+columns must agree, where both are finite, to ``tol`` relative to the column's largest magnitude in BEFORE (a
+column of round-off, such as a closure error, is compared to its own scale), and hold NaN at
+the same rows.  Columns that hold timings (their name contains "seconds" or "time") are not
 compared.  Prints one line per CSV that differs and the largest relative difference over
 all; exit status 0 when everything agrees, 1 otherwise.
 """
@@ -37,16 +37,16 @@ def compare_csv(before: Path, after: Path, tol: float) -> tuple[float, list[str]
             xv, yv = x.to_numpy(float), y.to_numpy(float)
             if not np.array_equal(np.isnan(xv), np.isnan(yv)):
                 problems.append(f"{col}: NaN at different rows ({int(np.sum(np.isnan(xv) != np.isnan(yv)))})")
-                continue
             finite = np.isfinite(xv) & np.isfinite(yv)
-            if not np.array_equal(xv[~finite & ~np.isnan(xv)], yv[~finite & ~np.isnan(xv)]):
+            infinite = np.isinf(xv)
+            if not (np.array_equal(infinite, np.isinf(yv)) and np.array_equal(xv[infinite], yv[infinite])):
                 problems.append(f"{col}: infinities differ")
             scale = np.max(np.abs(xv[finite]), initial=0.0)
             gap = np.max(np.abs(xv[finite] - yv[finite]), initial=0.0)
             rel = gap / scale if scale > 0 else gap
             worst = max(worst, rel)
             if rel > tol:
-                problems.append(f"{col}: relative difference {rel:.3g}")
+                problems.append(f"{col}: relative difference {rel:.3g} where both are finite")
         elif not x.astype(str).equals(y.astype(str)):
             problems.append(f"{col}: text differs in {int((x.astype(str) != y.astype(str)).sum())} rows")
     return worst, problems

@@ -22,15 +22,18 @@ import math
 from dataclasses import dataclass, replace
 
 import numpy as np
+from numba import njit
 
 from . import spatial_newton as kernel
 from .cssp_data import Constants, CsspInputs
-from .cssp_listing import initial_estimate, loop_operators
+from .cssp_listing import initial_estimate
 from .gsc_data import GscInputs
 
 DFP_ITERATIONS = 400
 #: statuses of a position
 NEWTON, DFP_THEN_NEWTON, NOT_CONVERGED, CANNOT_ASSEMBLE = "newton", "dfp+newton", "not converged", "cannot assemble"
+STATUSES = (NEWTON, DFP_THEN_NEWTON, NOT_CONVERGED, CANNOT_ASSEMBLE)
+_NEWTON, _DFP_THEN_NEWTON, _NOT_CONVERGED, _CANNOT_ASSEMBLE = range(4)
 
 
 @dataclass
@@ -85,14 +88,6 @@ def assembles(inputs: GscInputs, theta1, s1) -> np.ndarray:
     return b * b - c >= 0.0
 
 
-def residual(theta1: float, q: np.ndarray, c: Constants) -> tuple[np.ndarray, np.ndarray]:
-    """Loop-closure error r = (B - I real, B dual) (18,) and its Jacobian (18, 5): dB/dq_j = H_j B."""
-    h, b = loop_operators(theta1, q, c)
-    r = np.concatenate([(b.real - np.eye(3)).ravel(), b.dual.ravel()])
-    hb = h @ type(h)(np.broadcast_to(b.real, (5, 3, 3)), np.broadcast_to(b.dual, (5, 3, 3)))
-    return r, np.concatenate([hb.real.reshape(5, 9), hb.dual.reshape(5, 9)], axis=1).T
-
-
 def newton(theta1: float, q: np.ndarray, c: Constants, setup: NewtonSetup = THESIS_1991) -> tuple[np.ndarray, bool, int]:
     """The printed iteration from q (5,) at one crank angle (rad): (answer, converged, steps).
     Every |Delta| <= tol (c.newton_tol, 1e-7, unless the setup says) stops it, 150 steps
@@ -103,32 +98,103 @@ def newton(theta1: float, q: np.ndarray, c: Constants, setup: NewtonSetup = THES
     return q, status == kernel.OK, int(steps)
 
 
-def dfp(theta1: float, q: np.ndarray, c: Constants) -> np.ndarray:
-    """Davidon-Fletcher-Powell descent on f = ||r||^2 with a backtracking line search."""
-    r, jac = residual(theta1, q, c)
-    f, grad, hinv = r @ r, 2.0 * jac.T @ r, np.eye(5)
-    for _ in range(DFP_ITERATIONS):
-        direction = -hinv @ grad
-        if grad @ direction >= 0.0:                      # not a descent direction: restart
+@njit(cache=True)
+def _dot(x, y):
+    total = 0.0
+    for k in range(x.shape[0]):
+        total = total + x[k] * y[k]
+    return total
+
+
+@njit(cache=True)
+def _matvec(m, v):
+    out = np.zeros(m.shape[0])
+    for i in range(m.shape[0]):
+        out[i] = _dot(m[i], v)
+    return out
+
+
+@njit(cache=True)
+def residual(theta1, q, a1, a2, a4, alp4, s1):
+    """Loop-closure error r = (B - I real, B dual) (18,) and its Jacobian (18, 5), dB/dq_j =
+    H_j B, at crank angle theta1 (rad) and q (5,); B, H_j as the listing forms them."""
+    h, (br, bd) = kernel.loop_product(theta1, q, a1, a2, a4, alp4, s1)
+    r, jac = np.empty(18), np.empty((18, 5))
+    for i in range(3):
+        for j in range(3):
+            r[3 * i + j] = br[i, j] - (1.0 if i == j else 0.0)
+            r[9 + 3 * i + j] = bd[i, j]
+    for k, (hr, hd) in enumerate(h):
+        pr, pd = kernel.productdual(hr, hd, br, bd)
+        for i in range(3):
+            for j in range(3):
+                jac[3 * i + j, k], jac[9 + 3 * i + j, k] = pr[i, j], pd[i, j]
+    return r, jac
+
+
+@njit(cache=True)
+def dfp(theta1, q, a1, a2, a4, alp4, s1, iterations):
+    """Davidon-Fletcher-Powell descent on f = ||r||^2 from q with a backtracking (Armijo)
+    line search: at most ``iterations`` steps; stops where no step decreases f."""
+    r, jac = residual(theta1, q, a1, a2, a4, alp4, s1)
+    f, grad, hinv = _dot(r, r), 2.0 * _matvec(jac.T, r), np.eye(5)
+    for _ in range(iterations):
+        direction = -_matvec(hinv, grad)
+        if _dot(grad, direction) >= 0.0:                 # not a descent direction: restart
             hinv, direction = np.eye(5), -grad
-        step = 1.0
-        while step > 1e-12:
-            r_new, jac_new = residual(theta1, q + step * direction, c)
-            if r_new @ r_new <= f + 1e-4 * step * (grad @ direction):
-                break
+        step, slope = 1.0, _dot(grad, direction)
+        r_new, jac_new = residual(theta1, q + step * direction, a1, a2, a4, alp4, s1)
+        while not _dot(r_new, r_new) <= f + 1e-4 * step * slope:     # (a NaN f is no decrease)
             step *= 0.5
-        else:
-            return q
+            if step <= 1e-12:                            # no step decreases f
+                return q
+            r_new, jac_new = residual(theta1, q + step * direction, a1, a2, a4, alp4, s1)
         s = step * direction
-        q, f, grad_new = q + s, r_new @ r_new, 2.0 * jac_new.T @ r_new
+        q, f, grad_new = q + s, _dot(r_new, r_new), 2.0 * _matvec(jac_new.T, r_new)
         y = grad_new - grad
         grad = grad_new
-        if np.linalg.norm(grad) < 1e-13 or np.max(np.abs(s)) < 1e-13:
+        if math.sqrt(_dot(grad, grad)) < 1e-13 or np.max(np.abs(s)) < 1e-13:
             return q
-        sy, hy = s @ y, hinv @ y
-        if sy > 0.0 and y @ hy > 0.0:
-            hinv = hinv + np.outer(s, s) / sy - np.outer(hy, hy) / (y @ hy)
+        sy, hy = _dot(s, y), _matvec(hinv, y)
+        yhy = _dot(y, hy)
+        if sy > 0.0 and yhy > 0.0:
+            hinv = hinv + np.outer(s, s) / sy - np.outer(hy, hy) / yhy
     return q
+
+
+@njit(cache=True)
+def _sweep(theta1, s1, ok, q0, a1, a2, a4, alp4, tol, max_iterations, printed, use_dfp, stop_at_failure):
+    """The compiled loop of ``positions``: codes (``STATUSES`` index), q, closure, steps."""
+    n = theta1.shape[0]
+    q_out, closure = np.full((n, 5), np.nan), np.full(n, np.nan)
+    code, steps = np.full(n, _NOT_CONVERGED), np.zeros(n, dtype=np.int64)
+    for i in range(n):
+        if not ok[i]:
+            code[i] = _CANNOT_ASSEMBLE
+    guess = q0.copy()
+    for i in range(n):
+        if not ok[i]:
+            continue
+        if not np.all(np.isfinite(guess)):
+            if stop_at_failure:
+                break
+            continue
+        q, status, steps[i] = kernel.newton(theta1[i], guess, a1, a2, a4, alp4, s1[i], tol, max_iterations, printed)
+        done = status == kernel.OK
+        if done:
+            code[i] = _NEWTON
+        elif use_dfp and (i == 0 or code[i - 1] != _NOT_CONVERGED):      # DFP only after a converged position
+            start = dfp(theta1[i], guess, a1, a2, a4, alp4, s1[i], DFP_ITERATIONS)
+            q, status, steps[i] = kernel.newton(theta1[i], start, a1, a2, a4, alp4, s1[i], tol, max_iterations, printed)
+            done = status == kernel.OK
+            code[i] = _DFP_THEN_NEWTON if done else _NOT_CONVERGED
+        if done:
+            q_out[i], guess = q, q
+            r, _ = residual(theta1[i], q, a1, a2, a4, alp4, s1[i])
+            closure[i] = math.sqrt(_dot(r, r))
+        elif stop_at_failure:
+            break
+    return code, q_out, closure, steps
 
 
 def positions(inputs: GscInputs, theta1, use_dfp: bool = True, stop_at_failure: bool = False,
@@ -138,32 +204,16 @@ def positions(inputs: GscInputs, theta1, use_dfp: bool = True, stop_at_failure: 
     A failed angle leaves the next one to start from the last answer, or
     (``stop_at_failure``) ends the sweep, as the thesis's program stops."""
     th = np.asarray(theta1, dtype=float)
-    n = th.size
     s1 = inputs.axial(th)[0]
-    ok = assembles(inputs, th, s1) if setup.check_assembly else np.ones(n, dtype=bool)
-    q_out, closure = np.full((n, 5), np.nan), np.full(n, np.nan)
-    status, steps = np.full(n, NOT_CONVERGED, dtype=object), np.zeros(n, dtype=int)
-    status[~ok] = CANNOT_ASSEMBLE
-    guess = initial_estimate(constants(inputs, s1[0], setup.real4), real4=setup.real4)
+    ok = assembles(inputs, th, s1) if setup.check_assembly else np.ones(th.size, dtype=bool)
+    c = constants(inputs, s1[0], setup.real4)
+    s1 = s1.astype(np.float32).astype(float) if setup.real4 else s1.astype(float)
+    guess = initial_estimate(c, real4=setup.real4)
+    tol = c.newton_tol if setup.tol is None else setup.tol
     with np.errstate(all="ignore"):
-        for i in range(n):
-            if not (ok[i] and np.all(np.isfinite(guess))):
-                if stop_at_failure and ok[i]:
-                    break
-                continue
-            c = constants(inputs, s1[i], setup.real4)
-            q, done, steps[i] = newton(th[i], guess, c, setup)
-            if done:
-                status[i] = NEWTON
-            elif use_dfp and (i == 0 or status[i - 1] != NOT_CONVERGED):   # DFP only after a converged position
-                q, done, steps[i] = newton(th[i], dfp(th[i], guess, c), c, setup)
-                status[i] = DFP_THEN_NEWTON if done else NOT_CONVERGED
-            if done:
-                q_out[i], guess = q, q
-                closure[i] = np.linalg.norm(residual(th[i], q, c)[0])
-            elif stop_at_failure:
-                break
-    return PositionRun(q_out, status, closure, steps)
+        code, q, closure, steps = _sweep(th, s1, ok, guess, c.a1, c.a2, c.a4, c.alpha4, tol, setup.max_iterations,
+                                         setup.printed_inverse, use_dfp, stop_at_failure)
+    return PositionRun(q, np.array(STATUSES, dtype=object)[code], closure, steps)
 
 
 def positions_batch(inputs: list[GscInputs], theta1, use_dfp: bool = True,

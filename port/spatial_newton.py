@@ -172,8 +172,10 @@ def pseudo_inverse(a, printed):
 
 
 @njit(cache=True)
-def loop_matrices(th1, q, a1, a2, a4, alp4, s1):
-    """A (6 x 5) and V (6) of the listing at q = (THT2, ETA2, THT3, ETA3, S4)."""
+def loop_product(th1, q, a1, a2, a4, alp4, s1):
+    """The listing's H_j (real, dual: (3, 3) each) of q_j = THT2, ETA2, THT3, ETA3, S4
+    (dB/dq_j = H_j B; the listing's H2, H2D, H3, H3D, H4DD) and the loop product
+    B = M1 L2 L3 M4 (real, dual), at q."""
     tht2, eta2, tht3, eta3, s4 = q[0], q[1], q[2], q[3], q[4]
     m1r, m1d = np.zeros((3, 3)), np.zeros((3, 3))
     m1r[0, 0], m1r[0, 1], m1r[1, 0], m1r[1, 1], m1r[2, 2] = \
@@ -218,8 +220,15 @@ def loop_matrices(th1, q, a1, a2, a4, alp4, s1):
     h5q3r, h5q3d = productdual(h5r, h5d, zero, q3d)
     h4ddr, h4ddd = productdual(h5q3r, h5q3d, h5r.T.copy(), h5d.T.copy())
     br, bd = productdual(h5r, h5d, m4r, m4d)
+    return ((h2r, h2d), (h2dr, h2dd), (h3r, h3d), (h3dr, h3dd), (h4ddr, h4ddd)), (br, bd)
+
+
+@njit(cache=True)
+def loop_matrices(th1, q, a1, a2, a4, alp4, s1):
+    """A (6 x 5) and V (6) of the listing at q = (THT2, ETA2, THT3, ETA3, S4)."""
+    h, (br, bd) = loop_product(th1, q, a1, a2, a4, alp4, s1)
     a = np.empty((6, 5))
-    for col, (real, dual) in enumerate(((h2r, h2d), (h2dr, h2dd), (h3r, h3d), (h3dr, h3dd), (h4ddr, h4ddd))):
+    for col, (real, dual) in enumerate(h):
         a[0, col], a[1, col], a[2, col] = real[0, 1], real[0, 2], real[1, 2]
         a[3, col], a[4, col], a[5, col] = dual[0, 1], dual[0, 2], dual[1, 2]
     v = np.empty(6)
