@@ -23,7 +23,8 @@ from ..errors import LinkageError
 from ..port import gsc, gsc_position
 from ..port.gsc_data import GscInputs
 from ..port.gsc_quirks import GSC_CORRECTED, GSC_PRINTED
-from . import near_singular, planar_reference, rahman1991_figures
+from . import near_singular, planar_reference, progress, rahman1991_figures
+from .csv_output import write_csv
 from .published_tables import PUBLISHED_DIR
 
 NAME = "rahman1991-example"
@@ -230,24 +231,29 @@ def run(out_dir: Path) -> dict:
     target.mkdir(parents=True, exist_ok=True)
     timings, frames = {}, {}
     for engine in ENGINES:
+        progress.note(NAME, f"grid, {engine}")
         start = time.perf_counter()
         frames[engine] = grid(engine)
         timings[engine] = time.perf_counter() - start
         name = "port.csv" if engine == "port_printed" else f"{engine}.csv"
-        frames[engine][gsc.COLUMNS].to_csv(target / name, index=False, float_format="%.9g")
+        write_csv(frames[engine][gsc.COLUMNS], target / name, "%.9g")
     diagnostics = pd.concat([f[["a4", "alpha4_deg", "s1", "crank_deg", "status", "closure"]].assign(engine=e)
                              for e, f in frames.items()])
-    diagnostics.to_csv(target / "diagnostics.csv", index=False, float_format="%.6g")
+    write_csv(diagnostics, target / "diagnostics.csv", "%.6g")
+    progress.note(NAME, "convergence study")
     start = time.perf_counter()
     study = convergence_study()
     timings["convergence study"] = time.perf_counter() - start
     study.to_csv(target / "convergence.csv", index=False)
     claims = measure_claims(frames, convergence_limits(study))
     claims.to_csv(target / "claims.csv", index=False, float_format="%.6g")
+    progress.note(NAME, "near theta2 = 0")
     singular = near_singular.table()
     singular.to_csv(target / "near_singular.csv", index=False, float_format="%.6g")
+    progress.note(NAME, "the 1996 build on the grid")
     legacy = legacy_on_grid(frames["port_printed"])
     legacy.to_csv(target / "legacy.csv", index=False)
+    progress.note(NAME, "figures")
     plots = rahman1991_figures.plot_figures(frames, target)
     (target / "report.md").write_text(report(frames, claims, study, singular, legacy, plots, timings))
     return {"scene": NAME, "title": TITLE, "claims": claims, "timings": timings}

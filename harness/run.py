@@ -1,13 +1,18 @@
 """``linkrepro reproduce``: run every engine of each scene, diff, write the report."""
 from __future__ import annotations
 
+import multiprocessing
+import os
 import tempfile
 import time
+from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
+from queue import Empty
 
 import pandas as pd
 
-from . import appendix, case3_convergence, rahman1991, rahman1996_figures, readings, register as register_mod
+from . import appendix, case3_convergence, progress, rahman1991, rahman1996_figures, readings, register as register_mod
+from .csv_output import write_csv
 from .diff import diff_scene, summary
 from .engines import ENGINES, PrintedProgramError
 from .published_tables import PublishedTable
@@ -79,11 +84,11 @@ def run_scene(name: str, out_dir: Path, measure_readings: bool = True) -> dict:
             failures.append(f"engine {engine} failed: {exc}")
             continue
         timings[engine] = time.perf_counter() - start
-        frame.to_csv(target / f"{engine}.csv", index=False, float_format="%.9g")
+        write_csv(frame, target / f"{engine}.csv", "%.9g")
         results[engine] = frame
 
     diff = diff_scene(scene, published, results, register)
-    diff.to_csv(target / "diff.csv", index=False, float_format="%.9g")
+    write_csv(diff, target / "diff.csv", "%.9g")
     plots = plot_scene(scene, published, results, target)
     extra = "\n".join(f"**{f}**" for f in failures)
     if readings.has_readings(scene.table):     # an empty measurement says why it is empty
@@ -94,9 +99,82 @@ def run_scene(name: str, out_dir: Path, measure_readings: bool = True) -> dict:
             "failures": failures}
 
 
+#: the job that writes out/case3_convergence.*, run with the ali1977 scenes
+CASE3 = "case3-convergence"
+#: scenes by thesis, longest first: each group runs in one process (its scenes share one
+#: computation and one compile of the kernels), the groups side by side on the cores
+GROUP_ORDER = ("rahman1991", "rahman1996", "ali1977", CASE3)
+IN_POOL_ENV = "LINKREPRO_IN_POOL"
+
+
+def _group(name: str) -> int:
+    return next(k for k, prefix in enumerate(GROUP_ORDER) if name.startswith(prefix))
+
+
+def _init_worker(queue) -> None:
+    """A pool process: progress goes to the main process; no pools of its own."""
+    os.environ[IN_POOL_ENV] = "1"
+    progress.attach(queue)
+
+
+def _run_item(name: str, out_dir: Path, measure_readings: bool):
+    """One scene's summary, a special scene's result, or a failure message (str)."""
+    if name == CASE3:
+        return write_case3(out_dir)
+    module = {m.NAME: m for m in (appendix, rahman1996_figures, rahman1991)}.get(name)
+    if module is None:
+        return run_scene(name, out_dir, measure_readings)
+    try:
+        return module.run(out_dir)
+    except PrintedProgramError as exc:
+        return f"{name}: not written, engine printed failed: {exc}"
+
+
+def _run_group(names: list[str], out_dir: Path, measure_readings: bool) -> dict:
+    results = {}
+    for name in names:
+        progress.note(name, "")
+        results[name] = _run_item(name, out_dir, measure_readings)
+        progress.done(name)
+    return results
+
+
+def _run_groups(groups: list[list[str]], out_dir: Path, measure_readings: bool) -> dict:
+    """Every group's results: in a pool of processes, one group each, where there are
+    several groups and cores; else here, one after the other."""
+    workers = min(len(groups), os.cpu_count() or 1)
+    if workers < 2 or os.environ.get(IN_POOL_ENV):
+        return {k: v for names in groups for k, v in _run_group(names, out_dir, measure_readings).items()}
+    context = multiprocessing.get_context("spawn")
+    queue = context.Queue()
+    with ProcessPoolExecutor(workers, mp_context=context, initializer=_init_worker, initargs=(queue,)) as pool:
+        futures = [pool.submit(_run_group, names, out_dir, measure_readings) for names in groups]
+        while not all(f.done() for f in futures):
+            try:
+                progress.handle(queue.get(timeout=0.2))
+            except Empty:
+                pass
+        results = {}
+        for future in futures:
+            results.update(future.result())
+    return results
+
+
+def write_case3(out_dir: Path) -> None:
+    """out/case3_convergence.{csv,png,md}: the Case III speed-against-error sweep."""
+    data = case3_convergence.case3_data(repeat=1)
+    write_csv(data, out_dir / "case3_convergence.csv", "%.6g")
+    case3_convergence.plot_case3(data, out_dir / "case3_convergence.png")
+    (out_dir / "case3_convergence.md").write_text(
+        "# Case III: speed against error\n" + "\n".join(case3_convergence.case3_sweep(1, data))
+        + "\n\n![case3 convergence](case3_convergence.png)\n")
+
+
 def reproduce(names: list[str] | None, out_dir: Path, measure_readings: bool = True) -> list[dict]:
     """Run the named scenes (all by default) and write DIR/report.md over them; with all
-    scenes (or ali1977-table3) also the Case III speed-against-error sweep.
+    scenes (or ali1977-table3) also the Case III speed-against-error sweep.  The scenes
+    of each thesis run in one process, the theses side by side on the cores; a progress
+    line on standard error when it is a terminal.
 
     Before any work: ``OutputFolderError`` if DIR cannot be written, ``readings.CompilerError``
     if the OCR readings need gfortran and it is missing (``measure_readings=False`` skips
@@ -109,21 +187,20 @@ def reproduce(names: list[str] | None, out_dir: Path, measure_readings: bool = T
     if measure_readings:
         readings.require_compiler({name: get(name).table for name in names if name not in SPECIAL})
     start = time.perf_counter()
-    done = [run_scene(name, out_dir, measure_readings) for name in names if name not in SPECIAL]
+    items = names + ([CASE3] if measure_convergence else [])
+    groups = [[n for n in items if _group(n) == k] for k in range(len(GROUP_ORDER))]
+    groups = sorted((g for g in groups if g), key=lambda g: _group(g[0]))
+    with progress.Bar(len(items)):
+        results = _run_groups(groups, out_dir, measure_readings)
+    done = [results[name] for name in names if name not in SPECIAL]
     failures = [f"{item['scene']}: {failure}" for item in done for failure in item["failures"]]
+    failures += [r for r in results.values() if isinstance(r, str)]
 
-    def run_special(module):
-        if module.NAME not in names:
-            return None
-        try:
-            return module.run(out_dir)
-        except PrintedProgramError as exc:
-            failures.append(f"{module.NAME}: not written, engine printed failed: {exc}")
-            return None
+    def special(module):
+        result = results.get(module.NAME)
+        return None if result is None or isinstance(result, str) else result
 
-    curves = run_special(appendix)
-    figures = run_special(rahman1996_figures)
-    example = run_special(rahman1991)
+    curves, figures, example = special(appendix), special(rahman1996_figures), special(rahman1991)
     total = time.perf_counter() - start
     lines = ["# linkrepro: reproduction report", "",
              "Each published cell, for each engine: `match` (within half a unit of the printed last "
@@ -138,12 +215,6 @@ def reproduce(names: list[str] | None, out_dir: Path, measure_readings: bool = T
             lines.append(f"| {engine} | " + " | ".join(str(v) for v in row) + f" | {secs:.4f} |")
         lines += [f"\n**{f}**" for f in item["failures"]] + [""]
     if measure_convergence:
-        data = case3_convergence.case3_data(repeat=1)
-        data.to_csv(out_dir / "case3_convergence.csv", index=False, float_format="%.6g")
-        case3_convergence.plot_case3(data, out_dir / "case3_convergence.png")
-        (out_dir / "case3_convergence.md").write_text(
-            "# Case III: speed against error\n" + "\n".join(case3_convergence.case3_sweep(1, data))
-            + "\n\n![case3 convergence](case3_convergence.png)\n")
         lines += ["## [Case III: speed against error](case3_convergence.md)", "",
                   "Sub-elements n and angle step against the converged distributed-mass answer, and which "
                   "mass model each table needs (timings from this one run).", ""]
