@@ -190,13 +190,6 @@ def test_missing_printed_program_in_reproduce(tmp_path):
     assert "legacy" in done.stdout                   # the counts are still printed
 
 
-def test_missing_printed_program_in_bench(tmp_path):
-    empty = tmp_path / "bin"
-    empty.mkdir()
-    done = run("bench", "--repeat", "1", cwd=tmp_path, env=_env(**{BIN_ENV: str(empty)}))
-    error_line(done, 1, "ali1977_case1_source", "not built")
-
-
 def test_printed_program_that_cannot_start(tmp_path):
     folder = tmp_path / "bin"
     folder.mkdir()

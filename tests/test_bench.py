@@ -1,0 +1,100 @@
+"""``linkrepro bench``: what it computes, not how fast (no timing is asserted).
+
+The Pareto front on hand-made points, the knobs' reference settings at error 0, and the
+command's output files on the reduced configuration (``--quick``, a few seconds).
+"""
+from __future__ import annotations
+
+import contextlib
+import io
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from linkrepro.harness import bench
+from linkrepro.harness.cli import main
+
+
+def test_pareto_front_on_hand_made_points():
+    # (seconds, error): a staircase 1-4, a point beaten in both (5), one beaten in time
+    # only at equal error (6), a duplicate of a front point (7), a failed setting (8)
+    points = [(1.0, 8.0), (2.0, 4.0), (4.0, 2.0), (8.0, 1.0), (3.0, 5.0), (5.0, 2.0), (2.0, 4.0), (0.5, np.inf)]
+    front = bench.pareto_front(*zip(*points))
+    assert front.tolist() == [True, True, True, True, False, False, True, False]
+
+
+def test_pareto_front_single_and_dominating_points():
+    assert bench.pareto_front([1.0], [1.0]).tolist() == [True]
+    assert bench.pareto_front([1.0, 2.0, 3.0], [1.0, 2.0, 0.5]).tolist() == [True, False, True]
+    assert bench.pareto_front([1.0, 1.0], [np.nan, 2.0]).tolist() == [False, True]
+
+
+def test_mprd_flops_count_multiply_adds():
+    assert bench.mprd(3, 8, 8) == 2 * 3 * 8 * 8
+    assert bench.KED_CASE1 == bench.KED_KINEMATICS + 384 + 144 + 18
+
+
+@pytest.mark.parametrize("knob", bench.knobs(quick=True), ids=lambda k: k.name)
+def test_reference_setting_has_zero_error(knob):
+    rows = bench.knob_rows(knob, repeat=1)
+    by_setting = {row["setting"]: row for row in rows}
+    assert by_setting[knob.reference]["reference"]
+    assert by_setting[knob.reference]["error"] == pytest.approx(0.0, abs=1e-15)
+    assert sum(row["reference"] for row in rows) == 1
+    assert any(row["pareto"] for row in rows)
+
+
+def test_a_failed_newton_setting_is_inf_and_off_the_front():
+    cap = next(k for k in bench.knobs(quick=True) if k.name == "1991 Newton iteration cap")
+    rows = {row["setting"]: row for row in bench.knob_rows(cap, repeat=1)}
+    assert rows["10"]["error"] == np.inf and "failed at" in rows["10"]["note"]
+    assert not rows["10"]["pareto"]
+
+
+def test_clearing_caches_clears_the_port_geometry_cache():
+    from linkrepro.port import gsc_position
+    from linkrepro.port.gsc_data import GscInputs
+    gsc_position.constants(GscInputs(), 0.0)
+    assert gsc_position._geometry_constants.cache_info().currsize > 0
+    bench.clear_port_caches()
+    assert gsc_position._geometry_constants.cache_info().currsize == 0
+
+
+def test_quick_bench_writes_its_three_files(tmp_path, monkeypatch):
+    monkeypatch.setenv("LINKREPRO_PRINTED_BIN", str(tmp_path))     # no printed program is needed
+    out = tmp_path / "b"
+    stdout, stderr = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(stdout), contextlib.redirect_stderr(stderr):
+        status = main(["bench", "--repeat", "1", "--quick", "--out", str(out)])
+    assert status == 0, stderr.getvalue()
+    assert sorted(p.name for p in out.iterdir()) == sorted(bench.OUTPUTS)
+    frame = pd.read_csv(out / "bench.csv")
+    assert list(frame.columns) == bench.COLUMNS
+    costs, knobs = frame[frame.kind == "cost"], frame[frame.kind == "knob"]
+    assert set(costs.engine) == {"legacy", "port_printed", "port_corrected", "limit"}
+    assert costs.groupby("subject").engine.apply(lambda e: "limit" in set(e)).all()
+    assert (costs.us_per_position > 0).all() and (costs.flops_per_position > 0).all()
+    assert knobs.groupby("subject").pareto.any().all()
+    text = (out / "bench.md").read_text()
+    assert text.strip() == stdout.getvalue().strip()
+    assert "port (bugs) / legacy" in text and "legacy / limit" in text and "bench.png" in text
+    assert (out / "bench.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    # the port with the listings' bugs equals legacy on the tables' angles
+    agree = costs[(costs.engine == "port_printed") & costs.subject.str.startswith("K.E.D.")].error
+    assert (agree <= 1e-12).all()
+
+
+def test_bench_out_that_is_a_file_is_a_usage_error(tmp_path):
+    target = tmp_path / "file"
+    target.write_text("")
+    err = io.StringIO()
+    with contextlib.redirect_stderr(err):
+        assert main(["bench", "--quick", "--out", str(target)]) == 2
+    assert "--out" in err.getvalue() and "Traceback" not in err.getvalue()
+
+
+def test_run_bench_rejects_a_bad_repeat(tmp_path):
+    with pytest.raises(ValueError):
+        bench.run_bench(0, Path(tmp_path), quick=True)
