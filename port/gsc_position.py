@@ -124,8 +124,9 @@ def residual(theta1, q, a1, a2, a4, alp4, s1):
         for j in range(3):
             r[3 * i + j] = br[i, j] - (1.0 if i == j else 0.0)
             r[9 + 3 * i + j] = bd[i, j]
+    pr, pd = np.empty((3, 3)), np.empty((3, 3))
     for k, (hr, hd) in enumerate(h):
-        pr, pd = kernel.productdual(hr, hd, br, bd)
+        kernel.productdual(hr, hd, br, bd, pr, pd)
         for i in range(3):
             for j in range(3):
                 jac[3 * i + j, k], jac[9 + 3 * i + j, k] = pr[i, j], pd[i, j]
@@ -133,32 +134,59 @@ def residual(theta1, q, a1, a2, a4, alp4, s1):
 
 
 @njit(cache=True)
+def _identity(h):
+    for i in range(5):
+        for j in range(5):
+            h[i, j] = 1.0 if i == j else 0.0
+
+
+@njit(cache=True)
 def dfp(theta1, q, a1, a2, a4, alp4, s1, iterations):
     """Davidon-Fletcher-Powell descent on f = ||r||^2 from q with a backtracking (Armijo)
-    line search: at most ``iterations`` steps; stops where no step decreases f."""
+    line search: at most ``iterations`` steps; stops where no step decreases f.  Written
+    out element by element (each as numpy's vector expression of it would round)."""
     r, jac = residual(theta1, q, a1, a2, a4, alp4, s1)
-    f, grad, hinv = _dot(r, r), 2.0 * _matvec(jac.T, r), np.eye(5)
+    q, f, grad, hinv = q.copy(), _dot(r, r), _matvec(jac.T, r), np.empty((5, 5))
+    trial, s, y = np.empty(5), np.empty(5), np.empty(5)
+    for k in range(5):
+        grad[k] = 2.0 * grad[k]
+    _identity(hinv)
     for _ in range(iterations):
-        direction = -_matvec(hinv, grad)
+        direction = _matvec(hinv, grad)
+        for k in range(5):
+            direction[k] = -direction[k]
         if _dot(grad, direction) >= 0.0:                 # not a descent direction: restart
-            hinv, direction = np.eye(5), -grad
+            _identity(hinv)
+            for k in range(5):
+                direction[k] = -grad[k]
         step, slope = 1.0, _dot(grad, direction)
-        r_new, jac_new = residual(theta1, q + step * direction, a1, a2, a4, alp4, s1)
-        while not _dot(r_new, r_new) <= f + 1e-4 * step * slope:     # (a NaN f is no decrease)
+        while True:
+            for k in range(5):
+                trial[k] = q[k] + step * direction[k]
+            r, jac = residual(theta1, trial, a1, a2, a4, alp4, s1)
+            if _dot(r, r) <= f + 1e-4 * step * slope:      # (a NaN f is no decrease)
+                break
             step *= 0.5
             if step <= 1e-12:                            # no step decreases f
                 return q
-            r_new, jac_new = residual(theta1, q + step * direction, a1, a2, a4, alp4, s1)
-        s = step * direction
-        q, f, grad_new = q + s, _dot(r_new, r_new), 2.0 * _matvec(jac_new.T, r_new)
-        y = grad_new - grad
+        tiny = True                                      # max |s| < 1e-13 (False for a NaN)
+        for k in range(5):
+            s[k] = step * direction[k]
+            q[k] = q[k] + s[k]
+            tiny = tiny and abs(s[k]) < 1e-13
+        f, grad_new = _dot(r, r), _matvec(jac.T, r)
+        for k in range(5):
+            grad_new[k] = 2.0 * grad_new[k]
+            y[k] = grad_new[k] - grad[k]
         grad = grad_new
-        if math.sqrt(_dot(grad, grad)) < 1e-13 or np.max(np.abs(s)) < 1e-13:
+        if math.sqrt(_dot(grad, grad)) < 1e-13 or tiny:
             return q
         sy, hy = _dot(s, y), _matvec(hinv, y)
         yhy = _dot(y, hy)
         if sy > 0.0 and yhy > 0.0:
-            hinv = hinv + np.outer(s, s) / sy - np.outer(hy, hy) / yhy
+            for i in range(5):
+                for j in range(5):
+                    hinv[i, j] = hinv[i, j] + s[i] * s[j] / sy - hy[i] * hy[j] / yhy
     return q
 
 
@@ -166,16 +194,20 @@ def dfp(theta1, q, a1, a2, a4, alp4, s1, iterations):
 def _sweep(theta1, s1, ok, q0, a1, a2, a4, alp4, tol, max_iterations, printed, use_dfp, stop_at_failure):
     """The compiled loop of ``positions``: codes (``STATUSES`` index), q, closure, steps."""
     n = theta1.shape[0]
-    q_out, closure = np.full((n, 5), np.nan), np.full(n, np.nan)
-    code, steps = np.full(n, _NOT_CONVERGED), np.zeros(n, dtype=np.int64)
+    q_out, closure = np.empty((n, 5)), np.empty(n)
+    code, steps = np.empty(n, dtype=np.int64), np.zeros(n, dtype=np.int64)
     for i in range(n):
-        if not ok[i]:
-            code[i] = _CANNOT_ASSEMBLE
+        code[i], closure[i] = _NOT_CONVERGED if ok[i] else _CANNOT_ASSEMBLE, math.nan
+        for k in range(5):
+            q_out[i, k] = math.nan
     guess = q0.copy()
     for i in range(n):
         if not ok[i]:
             continue
-        if not np.all(np.isfinite(guess)):
+        finite = True
+        for k in range(5):
+            finite = finite and math.isfinite(guess[k])
+        if not finite:
             if stop_at_failure:
                 break
             continue
@@ -189,7 +221,9 @@ def _sweep(theta1, s1, ok, q0, a1, a2, a4, alp4, tol, max_iterations, printed, u
             done = status == kernel.OK
             code[i] = _DFP_THEN_NEWTON if done else _NOT_CONVERGED
         if done:
-            q_out[i], guess = q, q
+            for k in range(5):
+                q_out[i, k] = q[k]
+            guess = q
             r, _ = residual(theta1[i], q, a1, a2, a4, alp4, s1[i])
             closure[i] = math.sqrt(_dot(r, r))
         elif stop_at_failure:

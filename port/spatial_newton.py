@@ -56,9 +56,17 @@ def mulmavec(a, v):
 
 
 @njit(cache=True)
-def productdual(ar, ad, br, bd):
-    """PRODUCTDUAL: (AR + e AD)(BR + e BD) = AR BR + e (AD BR + AR BD), as MULTI and ADDMAT."""
-    return multi(ar, br), multi(ad, br) + multi(ar, bd)
+def productdual(ar, ad, br, bd, cr, cd):
+    """PRODUCTDUAL into (CR, CD): (AR + e AD)(BR + e BD) = AR BR + e (AD BR + AR BD), each
+    product a MULTI (a sum from 0.0, k = 1..3 in turn), the dual part their ADDMAT."""
+    for i in range(3):
+        for j in range(3):
+            real, left, right = 0.0, 0.0, 0.0
+            for k in range(3):
+                real = real + ar[i, k] * br[k, j]
+                left = left + ad[i, k] * br[k, j]
+                right = right + ar[i, k] * bd[k, j]
+            cr[i, j], cd[i, j] = real, left + right
 
 
 @njit(cache=True)
@@ -177,49 +185,51 @@ def loop_product(th1, q, a1, a2, a4, alp4, s1):
     (dB/dq_j = H_j B; the listing's H2, H2D, H3, H3D, H4DD) and the loop product
     B = M1 L2 L3 M4 (real, dual), at q."""
     tht2, eta2, tht3, eta3, s4 = q[0], q[1], q[2], q[3], q[4]
-    m1r, m1d = np.zeros((3, 3)), np.zeros((3, 3))
+    w = np.zeros((38, 3, 3))           # every matrix below is a view of one work array
+    m1r, m1d, l2r, l2d, l3r, zero, m4r, m4d = w[0], w[1], w[2], w[3], w[4], w[5], w[6], w[7]
+    q1r, q2r, q3d, q4r = w[8], w[9], w[10], w[11]
     m1r[0, 0], m1r[0, 1], m1r[1, 0], m1r[1, 1], m1r[2, 2] = \
         math.cos(th1), -math.sin(th1), math.sin(th1), math.cos(th1), 1.0
     m1d[0, 0], m1d[0, 1], m1d[0, 2] = -s1 * math.sin(th1), -s1 * math.cos(th1), a1 * math.sin(th1)
     m1d[1, 0], m1d[1, 1], m1d[1, 2] = s1 * math.cos(th1), -s1 * math.sin(th1), -a1 * math.cos(th1)
     m1d[2, 1] = a1
-    l2r, l2d = np.zeros((3, 3)), np.zeros((3, 3))
     l2r[0, 0], l2r[0, 1], l2r[0, 2] = math.cos(tht2) * math.cos(eta2), -math.sin(tht2), math.cos(tht2) * math.sin(eta2)
     l2r[1, 0], l2r[1, 1], l2r[1, 2] = math.sin(tht2) * math.cos(eta2), math.cos(tht2), math.sin(tht2) * math.sin(eta2)
     l2r[2, 0], l2r[2, 2] = -math.sin(eta2), math.cos(eta2)
     l2d[0, 1], l2d[0, 2] = a2 * math.cos(tht2) * math.sin(eta2), a2 * math.sin(tht2)
     l2d[1, 1], l2d[1, 2] = a2 * math.sin(tht2) * math.sin(eta2), -a2 * math.cos(tht2)
     l2d[2, 1] = a2 * math.cos(eta2)
-    l3r, zero = np.zeros((3, 3)), np.zeros((3, 3))
     l3r[0, 0], l3r[0, 1], l3r[0, 2] = math.cos(tht3) * math.cos(eta3), math.cos(tht3) * math.sin(eta3), math.sin(tht3)
     l3r[1, 0], l3r[1, 1], l3r[1, 2] = math.sin(tht3) * math.cos(eta3), math.sin(tht3) * math.sin(eta3), -math.cos(tht3)
     l3r[2, 0], l3r[2, 1] = -math.sin(eta3), math.cos(eta3)
-    m4r, m4d = np.zeros((3, 3)), np.zeros((3, 3))
     m4r[0, 0], m4r[1, 1], m4r[1, 2], m4r[2, 1], m4r[2, 2] = \
         1.0, math.cos(alp4), -math.sin(alp4), math.sin(alp4), math.cos(alp4)
     m4d[0, 1], m4d[0, 2] = -s4 * math.cos(alp4), s4 * math.sin(alp4)
     m4d[1, 0], m4d[1, 1], m4d[1, 2] = s4, -a4 * math.sin(alp4), -a4 * math.cos(alp4)
     m4d[2, 1], m4d[2, 2] = a4 * math.cos(alp4), -a4 * math.sin(alp4)
-    q1r, q2r, q3d, q4r = np.zeros((3, 3)), np.zeros((3, 3)), np.zeros((3, 3)), np.zeros((3, 3))
     q1r[0, 1], q1r[1, 0] = -1.0, 1.0
     q2r[0, 2], q2r[1, 2], q2r[2, 0], q2r[2, 1] = math.cos(tht2), math.sin(tht2), -math.cos(tht2), -math.sin(tht2)
     q3d[0, 1], q3d[1, 0] = -1.0, 1.0
     q4r[0, 2], q4r[1, 2], q4r[2, 0], q4r[2, 1] = math.cos(tht3), math.sin(tht3), -math.cos(tht3), -math.sin(tht3)
-    tm1r, tm1d = m1r.T.copy(), m1d.T.copy()
-    m1q1r, m1q1d = productdual(m1r, m1d, q1r, zero)
-    h2r, h2d = productdual(m1q1r, m1q1d, tm1r, tm1d)
-    m1q2r, m1q2d = productdual(m1r, m1d, q2r, zero)
-    h2dr, h2dd = productdual(m1q2r, m1q2d, tm1r, tm1d)
-    m1l2r, m1l2d = productdual(m1r, m1d, l2r, l2d)
-    tm1l2r, tm1l2d = m1l2r.T.copy(), m1l2d.T.copy()
-    h6r, h6d = productdual(m1l2r, m1l2d, q1r, zero)
-    h3r, h3d = productdual(h6r, h6d, tm1l2r, tm1l2d)
-    h7r, h7d = productdual(m1l2r, m1l2d, q4r, zero)
-    h3dr, h3dd = productdual(h7r, h7d, tm1l2r, tm1l2d)
-    h5r, h5d = productdual(m1l2r, m1l2d, l3r, zero)
-    h5q3r, h5q3d = productdual(h5r, h5d, zero, q3d)
-    h4ddr, h4ddd = productdual(h5q3r, h5q3d, h5r.T.copy(), h5d.T.copy())
-    br, bd = productdual(h5r, h5d, m4r, m4d)
+    m1q1r, m1q1d, h2r, h2d, m1q2r, m1q2d, h2dr, h2dd = w[12], w[13], w[14], w[15], w[16], w[17], w[18], w[19]
+    m1l2r, m1l2d, h6r, h6d, h3r, h3d, h7r, h7d = w[20], w[21], w[22], w[23], w[24], w[25], w[26], w[27]
+    h3dr, h3dd, h5r, h5d, h5q3r, h5q3d, h4ddr, h4ddd = w[28], w[29], w[30], w[31], w[32], w[33], w[34], w[35]
+    br, bd = w[36], w[37]
+    tm1r, tm1d = m1r.T, m1d.T
+    productdual(m1r, m1d, q1r, zero, m1q1r, m1q1d)
+    productdual(m1q1r, m1q1d, tm1r, tm1d, h2r, h2d)
+    productdual(m1r, m1d, q2r, zero, m1q2r, m1q2d)
+    productdual(m1q2r, m1q2d, tm1r, tm1d, h2dr, h2dd)
+    productdual(m1r, m1d, l2r, l2d, m1l2r, m1l2d)
+    tm1l2r, tm1l2d = m1l2r.T, m1l2d.T
+    productdual(m1l2r, m1l2d, q1r, zero, h6r, h6d)
+    productdual(h6r, h6d, tm1l2r, tm1l2d, h3r, h3d)
+    productdual(m1l2r, m1l2d, q4r, zero, h7r, h7d)
+    productdual(h7r, h7d, tm1l2r, tm1l2d, h3dr, h3dd)
+    productdual(m1l2r, m1l2d, l3r, zero, h5r, h5d)
+    productdual(h5r, h5d, zero, q3d, h5q3r, h5q3d)
+    productdual(h5q3r, h5q3d, h5r.T, h5d.T, h4ddr, h4ddd)
+    productdual(h5r, h5d, m4r, m4d, br, bd)
     return ((h2r, h2d), (h2dr, h2dd), (h3r, h3d), (h3dr, h3dd), (h4ddr, h4ddd)), (br, bd)
 
 
@@ -330,5 +340,6 @@ def listing_sweep(theta1, q0, a1, a2, a4, alp4, s1, th1d, tol, printed):
         dot, ddot, singular = rates(th1d, q, a1, a2, printed)
         if singular:
             return q_out, dot_out, ddot_out, steps, SINGULAR, j
-        q_out[j], dot_out[j], ddot_out[j] = q, dot, ddot
+        for k in range(5):
+            q_out[j, k], dot_out[j, k], ddot_out[j, k] = q[k], dot[k], ddot[k]
     return q_out, dot_out, ddot_out, steps, OK, -1
