@@ -5,7 +5,6 @@ import multiprocessing
 import os
 import tempfile
 import time
-from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 from queue import Empty
 
@@ -147,16 +146,16 @@ def _run_groups(groups: list[list[str]], out_dir: Path, measure_readings: bool) 
         return {k: v for names in groups for k, v in _run_group(names, out_dir, measure_readings).items()}
     context = multiprocessing.get_context("spawn")
     queue = context.Queue()
-    with ProcessPoolExecutor(workers, mp_context=context, initializer=_init_worker, initargs=(queue,)) as pool:
-        futures = [pool.submit(_run_group, names, out_dir, measure_readings) for names in groups]
-        while not all(f.done() for f in futures):
+    with context.Pool(workers, initializer=_init_worker, initargs=(queue,)) as pool:   # exit: terminate
+        pending = [pool.apply_async(_run_group, (names, out_dir, measure_readings)) for names in groups]
+        while not all(job.ready() for job in pending):
             try:
                 progress.handle(queue.get(timeout=0.2))
             except Empty:
                 pass
         results = {}
-        for future in futures:
-            results.update(future.result())
+        for job in pending:
+            results.update(job.get())
     return results
 
 
