@@ -3,8 +3,10 @@ from __future__ import annotations
 
 import multiprocessing
 import os
+import signal
 import tempfile
 import time
+from contextlib import contextmanager
 from pathlib import Path
 from queue import Empty
 
@@ -110,12 +112,6 @@ def _group(name: str) -> int:
     return next(k for k, prefix in enumerate(GROUP_ORDER) if name.startswith(prefix))
 
 
-def _init_worker(queue) -> None:
-    """A pool process: progress goes to the main process; no pools of its own."""
-    os.environ[IN_POOL_ENV] = "1"
-    progress.attach(queue)
-
-
 def _run_item(name: str, out_dir: Path, measure_readings: bool):
     """One scene's summary, a special scene's result, or a failure message (str)."""
     if name == CASE3:
@@ -138,24 +134,67 @@ def _run_group(names: list[str], out_dir: Path, measure_readings: bool) -> dict:
     return results
 
 
+def _group_process(index: int, names: list[str], out_dir: Path, measure_readings: bool, queue) -> None:
+    """A worker process: run one group; send ("result" or "error", index, value) home.
+    A Ctrl-C is the main process's to handle (it terminates the workers)."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    os.environ[IN_POOL_ENV] = "1"                 # no pools of its own (figures drawn here)
+    progress.attach(queue)
+    try:
+        queue.put(("result", index, _run_group(names, out_dir, measure_readings)))
+    except BaseException as exc:                  # noqa: BLE001 - raised again in the main process
+        queue.put(("error", index, exc))
+
+
+@contextmanager
+def _interrupt_deferred():
+    """A Ctrl-C inside the block is raised (as KeyboardInterrupt) when the block ends."""
+    caught = []
+    previous = signal.signal(signal.SIGINT, lambda *_: caught.append(True))
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, previous)
+    if caught:
+        raise KeyboardInterrupt
+
+
 def _run_groups(groups: list[list[str]], out_dir: Path, measure_readings: bool) -> dict:
-    """Every group's results: in a pool of processes, one group each, where there are
-    several groups and cores; else here, one after the other."""
+    """Every group's results: one process per group, as many at once as there are cores
+    (spawned, so that nothing compiled or locked here is shared); else here, in turn.
+    On a Ctrl-C (or any error) every worker is terminated and joined before it goes on."""
     workers = min(len(groups), os.cpu_count() or 1)
     if workers < 2 or os.environ.get(IN_POOL_ENV):
         return {k: v for names in groups for k, v in _run_group(names, out_dir, measure_readings).items()}
     context = multiprocessing.get_context("spawn")
-    queue = context.Queue()
-    with context.Pool(workers, initializer=_init_worker, initargs=(queue,)) as pool:   # exit: terminate
-        pending = [pool.apply_async(_run_group, (names, out_dir, measure_readings)) for names in groups]
-        while not all(job.ready() for job in pending):
+    queue, waiting, running, results = context.Queue(), list(enumerate(groups)), {}, {}
+    try:
+        while waiting or running:
+            while waiting and len(running) < workers:
+                index, names = waiting.pop(0)
+                worker = context.Process(target=_group_process, args=(index, names, out_dir, measure_readings, queue))
+                with _interrupt_deferred():           # never half-started
+                    worker.start()
+                    running[index] = worker
             try:
-                progress.handle(queue.get(timeout=0.2))
+                kind, key, value = queue.get(timeout=0.2)
             except Empty:
-                pass
-        results = {}
-        for job in pending:
-            results.update(job.get())
+                dead = [w.exitcode for w in running.values() if w.exitcode not in (None, 0)]
+                if dead:
+                    raise RuntimeError(f"a reproduce worker died (exit code {dead[0]})") from None
+                continue
+            if kind == "error":
+                raise value
+            if kind == "result":
+                results.update(value)
+                running.pop(key).join()
+            else:
+                progress.handle((kind, key, value))
+    finally:
+        for worker in running.values():
+            worker.terminate()
+        for worker in running.values():
+            worker.join()
     return results
 
 
