@@ -9,22 +9,18 @@ from __future__ import annotations
 import time
 from pathlib import Path
 
-import matplotlib
+import numpy as np
+import pandas as pd
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-import pandas as pd  # noqa: E402
-
-from .. import legacy  # noqa: E402
-from ..port import PRINTED, cognate_case1, source_case1  # noqa: E402
-from ..port.ked_case2 import LISTING as CASE2  # noqa: E402
-from ..port.ked_case2 import COGNATE_LISTING as CASE2_COG  # noqa: E402
-from ..port.ked_case2 import case2_cognate, case2_source  # noqa: E402
-from ..port.ked_case3 import COGNATE_LISTING as CASE3_COG  # noqa: E402
-from ..port.ked_case3 import LISTING as CASE3  # noqa: E402
-from ..port.ked_case3 import case3_cognate, case3_source  # noqa: E402
-from .report import finish_plot  # noqa: E402
+from .. import legacy
+from ..port import PRINTED, cognate_case1, source_case1
+from ..port.ked_case2 import LISTING as CASE2
+from ..port.ked_case2 import COGNATE_LISTING as CASE2_COG
+from ..port.ked_case2 import case2_cognate, case2_source
+from ..port.ked_case3 import COGNATE_LISTING as CASE3_COG
+from ..port.ked_case3 import LISTING as CASE3
+from ..port.ked_case3 import case3_cognate, case3_source
+from .report import curve_figure, draw_all
 
 NAME = "ali1977-appendixA"
 TITLE = "Ali (1977) Appendix A: elastic deflections against input-link rotation, 300 and 400 rpm"
@@ -83,16 +79,15 @@ def run(out_dir: Path) -> dict:
 
 
 def _plot(curves: pd.DataFrame, target: Path) -> list[Path]:
-    paths = []
+    """One PNG per case, mechanism and quantity: legacy and port at both speeds."""
+    jobs = []
     for (case, mech, q), group in curves.groupby(["case", "mechanism", "quantity"], sort=False):
-        fig, ax = plt.subplots(figsize=(6.4, 3.6))
-        for (rpm, engine), g in group.groupby(["rpm", "engine"]):
-            style = dict(ls="-", lw=1.5) if engine == "legacy" else dict(ls="--", lw=1.0, color="k")
-            ax.plot(g["input_deg"], g["value"], label=f"{engine}, {rpm:g} rpm", **style)
-        paths.append(finish_plot(fig, ax, "input-link rotation (deg)", QUANTITIES[q],
-                                 f"{mech.upper()} MECHANISM - CASE {case}: {q}",
-                                 target / f"case{case}_{mech}_{q}.png"))
-    return paths
+        lines = [(g["input_deg"].to_numpy(), g["value"].to_numpy(), f"{engine}, {rpm:g} rpm",
+                  dict(ls="-", lw=1.5) if engine == "legacy" else dict(ls="--", lw=1.0, color="k"))
+                 for (rpm, engine), g in group.groupby(["rpm", "engine"])]
+        jobs.append((lines, "input-link rotation (deg)", QUANTITIES[q],
+                     f"{mech.upper()} MECHANISM - CASE {case}: {q}", target / f"case{case}_{mech}_{q}.png"))
+    return draw_all(curve_figure, jobs)
 
 
 def _claims(curves: pd.DataFrame) -> pd.DataFrame:

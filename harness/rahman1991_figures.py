@@ -21,12 +21,11 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import matplotlib
+import numpy as np
+import pandas as pd
+from matplotlib.figure import Figure
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-import pandas as pd  # noqa: E402
+from .report import draw_all, save_png
 
 IDEAL = {"a4": 0.0, "s1": 0.0, "alpha4_deg": 270.0}
 FAMILIES = {"a4": ("a4", [10.0, 20.0, 30.0], {"s1": 3.5, "alpha4_deg": 270.0}),
@@ -43,10 +42,17 @@ def unit(quantity: str) -> str:
     return {"s": "in", "F": "lbf", "T": "lbf*in"}[quantity[0]]
 
 
-def select(frame: pd.DataFrame, where: dict, quantity: str) -> tuple[np.ndarray, np.ndarray, int]:
+def case_rows(frame: pd.DataFrame) -> dict[tuple, pd.DataFrame]:
+    """Each case's rows sorted by crank angle, keyed by (a4, s1, alpha4_deg) rounded to 1e-6."""
+    keys = [frame[col].astype(float).round(6) for col in IDEAL]
+    return {key: rows.sort_values("crank_deg") for key, rows in frame.groupby(keys, sort=False)}
+
+
+def select(cases: dict[tuple, pd.DataFrame], where: dict, quantity: str) -> tuple[np.ndarray, np.ndarray, int]:
     """Crank angles and values of one case (NaN where not converged); and how many are not finite."""
-    mask = np.logical_and.reduce([np.isclose(frame[col].to_numpy(float), v) for col, v in where.items()])
-    rows = frame.loc[mask].sort_values("crank_deg")
+    rows = cases.get(tuple(np.round(float(where[col]), 6) for col in IDEAL))
+    if rows is None:
+        return np.empty(0), np.empty(0), 0
     y = rows[quantity].to_numpy(float).copy()
     y[~rows["converged"].to_numpy(bool)] = np.nan
     return rows["crank_deg"].to_numpy(float), y, int((~np.isfinite(y)).sum())
@@ -64,18 +70,24 @@ def robust_limits(values: np.ndarray) -> tuple[float, float] | None:
     return lo - margin, hi + margin
 
 
-def draw_panel(ax, frame: pd.DataFrame, family: str, quantity: str) -> None:
+def panel_curves(cases: dict[tuple, pd.DataFrame], family: str, quantity: str) -> tuple[list, list]:
+    """One panel's data: curves (x, y, plot style, label), ideal first, and the cases not drawn."""
     col, members, fixed = FAMILIES[family]
-    cases = [("ideal", "k", IDEAL)] + [(f"{LABEL[col]} = {value:g} {UNIT[col]}", color, {**fixed, col: value})
+    named = [("ideal", "k", IDEAL)] + [(f"{LABEL[col]} = {value:g} {UNIT[col]}", color, {**fixed, col: value})
                                        for color, value in zip(COLORS, members)]
     curves, missing = [], []
-    for name, color, where in cases:
-        x, y, n = select(frame, where, quantity)
+    for name, color, where in named:
+        x, y, n = select(cases, where, quantity)
         if x.size == 0 or n == x.size:
             missing.append(f"{name}: {'no rows' if x.size == 0 else 'not converged'}")
             continue
         style = dict(color=color, lw=2.5, zorder=1) if name == "ideal" else dict(color=color, lw=1.2, zorder=2)
         curves.append((x, y, style, f"{name} ({n} not converged)" if n else name))
+    return curves, missing
+
+
+def draw_panel(ax, family: str, curves: list, missing: list) -> None:
+    """Curves with robust y-limits, off-scale points as edge triangles, a note and a legend."""
     limits = robust_limits(np.concatenate([c[1] for c in curves])) if curves else None
     if limits is not None:  # headroom above the data for the legend and the note
         limits = (limits[0], limits[1] + 0.4 * (limits[1] - limits[0]))
@@ -93,35 +105,38 @@ def draw_panel(ax, frame: pd.DataFrame, family: str, quantity: str) -> None:
         ax.plot([], [], ls="none", label=label)
     if limits is not None:
         ax.set_ylim(*limits)
-    fixed_text = ", ".join(f"{LABEL[k]}={v:g}" for k, v in fixed.items())
+    fixed_text = ", ".join(f"{LABEL[k]}={v:g}" for k, v in FAMILIES[family][2].items())
     ax.set_title(f"family {family} ({fixed_text})", fontsize=9)
     note = f"{off} point(s) off-scale,\nshown as edge triangles" if off else "all finite points on scale"
     ax.text(0.02, 0.97, note if limits is not None else "no finite values", transform=ax.transAxes,
             fontsize=7, va="top", color="firebrick" if off else "gray")
-    ax.set_xlim(0, 360)
-    ax.set_xticks(range(0, 361, 60))
     ax.grid(alpha=0.3)
     ax.legend(fontsize=6, loc="upper right")
+
+
+def draw_figure(quantity: str, panels: dict[str, list], path: Path) -> Path:
+    """One PNG: rows = engines, columns = families; panels maps engine -> [(curves, missing)] per family."""
+    fig = Figure(figsize=(4.2 * len(FAMILIES), 3.2 * len(panels)))
+    axes = fig.subplots(len(panels), len(FAMILIES), squeeze=False, sharex=True)
+    axes[0][0].set_xlim(0, 360)
+    axes[0][0].set_xticks(range(0, 361, 60))
+    for row, (engine, data) in zip(axes, panels.items()):
+        for ax, family, (curves, missing) in zip(row, FAMILIES, data):
+            draw_panel(ax, family, curves, missing)
+        row[0].set_ylabel(f"{engine}\n{quantity} ({unit(quantity)})")
+    for ax in axes[-1]:
+        ax.set_xlabel("crank angle (deg)")
+    fig.suptitle(f"Rahman (1991) figs. 5-38: {quantity} against crank angle, thick black = ideal planar case",
+                 fontsize=10)
+    return save_png(fig, path, left=0.09, right=0.977, bottom=0.091, top=0.901, wspace=0.273, hspace=0.251)
 
 
 def plot_figures(results: dict[str, pd.DataFrame], out_dir: Path) -> list[Path]:
     """One PNG per quantity: rows = engines, columns = families. Returns the paths written."""
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
-    paths = []
-    for quantity in QUANTITIES:
-        fig, axes = plt.subplots(len(results), len(FAMILIES), figsize=(4.2 * len(FAMILIES), 3.2 * len(results)),
-                                 squeeze=False, sharex=True)
-        for row, (engine, frame) in enumerate(results.items()):
-            for ax, family in zip(axes[row], FAMILIES):
-                draw_panel(ax, frame, family, quantity)
-            axes[row][0].set_ylabel(f"{engine}\n{quantity} ({unit(quantity)})")
-        for ax in axes[-1]:
-            ax.set_xlabel("crank angle (deg)")
-        fig.suptitle(f"Rahman (1991) figs. 5-38: {quantity} against crank angle, thick black = ideal planar case",
-                     fontsize=10)
-        fig.tight_layout()
-        paths.append(out_dir / f"fig_{quantity}.png")
-        fig.savefig(paths[-1], dpi=90)
-        plt.close(fig)
-    return paths
+    cases = {engine: case_rows(frame) for engine, frame in results.items()}
+    jobs = [(quantity, {engine: [panel_curves(rows, family, quantity) for family in FAMILIES]
+                        for engine, rows in cases.items()}, out_dir / f"fig_{quantity}.png")
+            for quantity in QUANTITIES]
+    return draw_all(draw_figure, jobs)

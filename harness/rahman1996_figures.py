@@ -8,17 +8,13 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import matplotlib
+import numpy as np
+import pandas as pd
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-import pandas as pd  # noqa: E402
-
-from .published_tables import PUBLISHED_DIR, PublishedTable  # noqa: E402
-from .report import STYLE, finish_plot  # noqa: E402
-from ..port.cssp_quirks import CSSP_CORRECTED, CSSP_PRINTED  # noqa: E402
-from .scenes_rahman1996 import CRANK_DEG, legacy_tables, port_tables, printed_run  # noqa: E402
+from .published_tables import PUBLISHED_DIR, PublishedTable
+from .report import STYLE, curve_figure, draw_all
+from ..port.cssp_quirks import CSSP_CORRECTED, CSSP_PRINTED
+from .scenes_rahman1996 import CRANK_DEG, legacy_tables, port_tables, printed_run
 
 NAME = "rahman1996-figures"
 TABLES = ["5_2", "5_3", "5_4", "5_5", "5_6", "5_7"]
@@ -63,16 +59,14 @@ def section_5_3(pct: pd.DataFrame) -> pd.DataFrame:
 
 
 def plot_figures(pct: pd.DataFrame, outdir: Path) -> list[Path]:
-    paths = []
+    """Figures 5.1-5.6: every engine's decrement against crank angle."""
+    jobs = []
     for k, table in enumerate(TABLES, start=1):
-        fig, ax = plt.subplots(figsize=(6.4, 3.6))
-        for engine, group in pct[pct["table"] == table].groupby("engine", sort=False):
-            style = dict(marker="o", ls="none", color="k", ms=4) if engine == "published" else STYLE.get(engine, {})
-            ax.plot(group["crank_deg"], group["pct"], label=engine, **style)
-        paths.append(finish_plot(fig, ax, "crank angle (deg)", "decrement (%)",
-                                 f"Figure 5.{k} (Table 5.{k + 1}): (before - after)/before",
-                                 outdir / f"figure5_{k}.png"))
-    return paths
+        curves = [(group["crank_deg"].to_numpy(), group["pct"].to_numpy(), engine, STYLE.get(engine, {}))
+                  for engine, group in pct[pct["table"] == table].groupby("engine", sort=False)]
+        jobs.append((curves, "crank angle (deg)", "decrement (%)",
+                     f"Figure 5.{k} (Table 5.{k + 1}): (before - after)/before", outdir / f"figure5_{k}.png"))
+    return draw_all(curve_figure, jobs)
 
 
 def run(out_dir: Path) -> dict:
