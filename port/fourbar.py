@@ -3,17 +3,20 @@
 As the 1977 listings do it (chapter IV, "complex number approach"): the coupler
 and follower angles from the half-angle (Freudenstein) quadratic, then angular
 velocities and accelerations at constant input speed.  Lengths in inches,
-angles in radians, speeds in rad/s.  Every function is vectorised over the input
-angle ``t2``; ``pi`` is the value of pi the caller uses (the listings use 22/7).
+angles in radians, speeds in rad/s.  ``half_angle_roots`` is the listing's statements at
+one input angle (compiled by numba into the K.E.D. port's loops over the angles).
 
 The argument checks (``TypeError`` for a value of the wrong type, ``ValueError`` for a value
 outside the programs' domain) are ``linkrepro.checks``, shared with the legacy face.
 """
 from __future__ import annotations
 
+import functools
+import math
 from dataclasses import dataclass
 
 import numpy as np
+from numba import njit
 
 from ..checks import parameter
 from ..errors import AssemblyError, SingularPositionError
@@ -45,26 +48,29 @@ def freudenstein_constants(l1, l3, l4, l5):
     return k1, k2, k3, k4, k5
 
 
-def _half_angle_terms(t2, k):
-    """AA..FF of the listings (statements 14-19) and the two discriminants."""
-    k1, k2, k3, k4, k5 = k
-    c, s = libm.cos(t2), libm.sin(t2)
-    with np.errstate(invalid="ignore", over="ignore"):     # constants may be inf/NaN (a degenerate cognate)
-        aa = c + k3 - k1 - (k2 * c)
-        bb = -2.0 * s
-        cc = k1 + k3 - (1.0 + k2) * c
-        dd = (k4 * c) + c + k5 - k1
-        ee = -2.0 * s
-        ff = (k4 * c) - c + k5 + k1
-        disc3 = ee * ee - 4.0 * dd * ff
-        disc4 = bb * bb - 4.0 * aa * cc
-    return aa, bb, dd, ee, disc3, disc4
+@njit(cache=True, error_model="numpy")
+def half_angle_roots(c2, s2, k1, k2, k3, k4, k5):
+    """The listings' two half-angle quadratics at one input angle (statements 14-21), from
+    ``c2``, ``s2`` (cos, sin of T2) and K1..K5: DD x^2 + EE x + FF = 0 in x = tan(T3/2),
+    AA x^2 + BB x + CC = 0 in x = tan(T4/2).  Returns T3, T4 (rad) and the two discriminants
+    (where one is negative the loop cannot close and the roots are NaN; constants may be inf
+    or NaN, a degenerate cognate: IEEE arithmetic throughout, as in the listing)."""
+    aa = c2 + k3 - k1 - (k2 * c2)
+    bb = -2.0 * s2
+    cc = k1 + k3 - (1.0 + k2) * c2
+    dd = (k4 * c2) + c2 + k5 - k1
+    ee = -2.0 * s2
+    ff = (k4 * c2) - c2 + k5 + k1
+    disc3 = ee * ee - 4.0 * dd * ff
+    disc4 = bb * bb - 4.0 * aa * cc
+    t3 = 2.0 * math.atan((-ee - math.sqrt(disc3)) / (2.0 * dd))
+    t4 = 2.0 * math.atan((-bb - math.sqrt(disc4)) / (2.0 * aa))
+    return t3, t4, disc3, disc4
 
 
-def cannot_close(t2, k) -> np.ndarray:
+def cannot_close(disc3, disc4) -> np.ndarray:
     """True at each input angle where the listing's test fails: a negative discriminant
     (``EE*EE-4.0*DD*FF.LT.0.0.OR.BB*BB-4.0*AA*CC.LT.0.0``; NaN compares false, as there)."""
-    *_, disc3, disc4 = _half_angle_terms(t2, k)
     return (disc3 < 0.0) | (disc4 < 0.0)
 
 
@@ -73,7 +79,7 @@ def raise_first_assembly_failure(deg, **loops) -> None:
     cannot close: the listings test every loop at one angle before going on to the next."""
     first = None
     for who, bad in loops.items():
-        if np.any(bad):
+        if bad.any():
             i = int(np.argmax(bad))
             if first is None or i < first[0]:
                 first = (i, who)
@@ -81,31 +87,25 @@ def raise_first_assembly_failure(deg, **loops) -> None:
         raise AssemblyError(f"{first[1]}: the four-bar cannot close", float(deg[first[0]]))
 
 
-def half_angle_positions(t2, k, deg, who):
-    """Coupler and follower angles T3, T4 (rad) from the half-angle quadratics.
-
-    ``k`` holds K1..K5; ``deg`` the input angles (for error messages).
-    Raises AssemblyError where a discriminant is negative (the loop cannot close).
-    """
-    aa, bb, dd, ee, disc3, disc4 = _half_angle_terms(t2, k)
-    bad = (disc3 < 0.0) | (disc4 < 0.0)
-    if np.any(bad):
+def raise_if_cannot_close(deg, who, disc3, disc4) -> None:
+    """AssemblyError at the first input angle where a discriminant is negative (with the
+    smaller of the two)."""
+    bad = cannot_close(disc3, disc4)
+    if bad.any():
         i = int(np.argmax(bad))
         raise AssemblyError(f"{who}: the four-bar cannot close", float(deg[i]),
                             discriminant=float(min(disc3[i], disc4[i])))
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        t3 = 2.0 * libm.arctan((-ee - np.sqrt(disc3)) / (2.0 * dd))
-        t4 = 2.0 * libm.arctan((-bb - np.sqrt(disc4)) / (2.0 * aa))
-    return t3, t4
 
 
 def check_finite(deg, who, **arrays):
     """Raise SingularPositionError where a result is not finite: the quantities are taken in
     the order given, and for the first one that is non-finite anywhere, its first input angle
     (with any non-finite entry along the trailing axes), as the legacy face reports it."""
+    if np.isfinite(np.concatenate([values.ravel() for values in arrays.values()])).all():
+        return
     for name, values in arrays.items():
         bad = ~np.isfinite(values)
-        if np.any(bad):
+        if bad.any():
             i = int(np.argmax(bad.reshape(len(deg), -1).any(axis=1)))
             raise SingularPositionError(f"{who}: non-finite {name}", float(deg[i]))
 
@@ -126,6 +126,7 @@ class Cognate:
     calp: float
 
     @classmethod
+    @functools.lru_cache(maxsize=256)      # a pure function of its (immutable) arguments, asked for on every call
     def of(cls, lengths: Lengths, alp: float, pi: float) -> "Cognate":
         l1, l2, l3, l4, l5 = (np.float64(v) for v in (lengths.l1, lengths.l2, lengths.l3, lengths.l4, lengths.l5))
         # IEEE arithmetic as in the listing: a degenerate cognate (CL4 = 0 when L2 = L3 and
@@ -144,6 +145,7 @@ class Cognate:
             calp = pi - (beta + alp)
         return cls(float(cl1), float(cl2), float(cl3), float(cl4), float(cl5), float(beta), float(calp))
 
+    @functools.lru_cache(maxsize=256)
     def constants(self):
         """CK1..CK5 (cognate listing, 43-47): the crossed loop's half-angle constants."""
         cl1, cl3, cl4, cl5 = (np.float64(v) for v in (self.cl1, self.cl3, self.cl4, self.cl5))

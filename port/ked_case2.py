@@ -14,12 +14,13 @@ from __future__ import annotations
 from types import SimpleNamespace
 
 import numpy as np
+from numba import njit
 
 from ..checks import angles_deg, as_real4, weight_lbf
 from . import libm
 from .fourbar import Lengths, check_finite
-from .ked_case1 import (EXAMPLE, GRAVITY_IN, Section, _pi, cognate_mechanics, deflection, expect, flexibility,
-                        source_mechanics)
+from .ked_case1 import (EXAMPLE, GRAVITY_IN, GRAVITY_REAL4, Section, _cognate_linkage, _pi, _source_linkage,
+                        deflection, expect, flexibility)
 from .quirks import PRINTED, Quirks
 from .real4 import store
 
@@ -33,39 +34,58 @@ COGNATE_LISTING = PRINTED.without("source_alpha_101", "source_rpm_400", "i_coeff
 DENSITY = 0.098          # lbf/in^3, aluminium (DNTY)
 
 
+_P4_TO_P8 = np.arange(3, 8)
+
+
 def beta2(mech, quirks: Quirks, cognate: bool = False) -> np.ndarray:
     """beta2 (N, 8, 8): beta1, then P4..P8 into f4, f5, f6, (f4, f5, f7), f8: eq. (30),
-    or for the crossed cognate eq. (31), with cos, sin(t3* - t2) in column 7."""
+    or for the crossed cognate eq. (31), with cos, sin(t3* - t2) in column 7; REAL*4 as the
+    listing stores it where ``quirks.real4_storage``."""
     t2, t3 = mech.extra["t2"], mech.extra["t3"]
-    n = len(t2)
-    extra = np.zeros((n, 8, 5))
-    extra[:, 3, 0] = extra[:, 4, 1] = extra[:, 5, 2] = extra[:, 6, 3] = extra[:, 7, 4] = 1.0
-    extra[:, 3, 3] = libm.cos(t3 - t2) if cognate else -libm.cos(t2 - t3)
-    extra[:, 4, 3] = libm.sin(t3 - t2) if cognate else libm.sin(t2 - t3)
-    return np.concatenate([mech.beta, extra], axis=-1)
+    right = np.zeros(mech.beta.shape[:-1] + (8,), np.float32 if quirks.real4_storage else np.float64)
+    right[..., :3] = mech.beta
+    right[..., _P4_TO_P8, _P4_TO_P8] = 1.0
+    turn = t3 - t2 if cognate else t2 - t3
+    right[..., 3, 6] = libm.cos(turn) if cognate else -libm.cos(turn)
+    right[..., 4, 6] = libm.sin(turn)
+    return right
 
 
 def joint_loads(mech, lengths: Lengths, density: float, area: float, quirks: Quirks) -> np.ndarray:
-    """P1..P8 (N, 8) in lbf, as the listing forms them (statements 56-72)."""
-    real4 = quirks.real4_storage
-    t2, t3, t4 = mech.extra["t2"], mech.extra["t3"], mech.extra["t4"]
-    (xaa, yaa), (xba, yba) = mech.extra["acc_a"].T, mech.extra["acc_b"].T
+    """P1..P8 (N, 8) in lbf, as the listing forms them (statements 56-72); the pins'
+    accelerations are the linkage's (``mech.extra["linkage"].pin_accelerations()``)."""
+    link = mech.extra["linkage"]
+    (xaa, yaa), (xba, yba) = link.pin_accelerations()
     m1, m2, m3, m4 = (density * (area * length) for length in (lengths.l1, lengths.l2, lengths.l3, lengths.l4))
-    g_const = float(np.float32(32.178) * np.float32(12.0)) if real4 else GRAVITY_IN
-    xpa, ypa = (store(a, real4).astype(np.float64) for a in mech.acc.T)        # XPA, YPA are REAL*4
-    if quirks.joint_load_components:                                            # D031
-        p5 = m1 * (yaa * libm.sin(t2) - xaa * libm.cos(t2))
-        p6 = m4 * (yba * libm.sin(t4) - xba * libm.cos(t4))
-        p7 = m3 * (yaa * libm.sin(t3) - xaa * libm.cos(t3))
-    else:   # along the element coordinates: f5 across the crank, f6 along the follower, -e3 (eq. 30)
-        p5 = m1 * (-xaa * libm.sin(t2) + yaa * libm.cos(t2))
-        p6 = m4 * (xba * libm.cos(t4) + yba * libm.sin(t4))
-        p7 = m3 * (-xaa * libm.cos(t3) - yaa * libm.sin(t3))
-    zero = np.zeros_like(t2)
-    loads = np.stack([(m2 * xpa) / g_const, (m2 * ypa) / g_const, zero,
-                      (m1 * (xaa * libm.cos(t2) + yaa * libm.sin(t2))) / g_const,
-                      p5 / g_const, p6 / g_const, p7 / g_const, zero], axis=-1)
-    return loads if quirks.inertia_sign else -loads                              # D018
+    return _joint_loads(np.ascontiguousarray(mech.acc), xaa, yaa, xba, yba, link.c2, link.s2, link.c3, link.s3,
+                        link.c4, link.s4, m1, m2, m3, m4, GRAVITY_REAL4 if quirks.real4_storage else GRAVITY_IN,
+                        quirks.real4_storage, quirks.joint_load_components, quirks.inertia_sign)
+
+
+@njit(cache=True, error_model="numpy")
+def _joint_loads(acc, xaa, yaa, xba, yba, c2, s2, c3, s3, c4, s4, m1, m2, m3, m4, g_const, real4, components,
+                 plus_m_a):
+    """joint_loads at each input angle (compiled as ked_case1's kernels are): the path point's
+    XPA, YPA (in/s^2, REAL*4 with ``real4``), the pins' XAA..YBA, the cos and sin of t2, t3, t4,
+    the links' weights m1..m4 (lbf) and g (in/s^2)."""
+    loads = np.empty((c2.size, 8))
+    for n in range(c2.size):
+        xpa, ypa = acc[n, 0], acc[n, 1]
+        if real4:                                                                   # XPA, YPA are REAL*4
+            xpa, ypa = np.float64(np.float32(xpa)), np.float64(np.float32(ypa))
+        if components:                                                              # D031
+            p5 = m1 * (yaa[n] * s2[n] - xaa[n] * c2[n])
+            p6 = m4 * (yba[n] * s4[n] - xba[n] * c4[n])
+            p7 = m3 * (yaa[n] * s3[n] - xaa[n] * c3[n])
+        else:   # along the element coordinates: f5 across the crank, f6 along the follower, -e3 (eq. 30)
+            p5 = m1 * (-xaa[n] * s2[n] + yaa[n] * c2[n])
+            p6 = m4 * (xba[n] * c4[n] + yba[n] * s4[n])
+            p7 = m3 * (-xaa[n] * c3[n] - yaa[n] * s3[n])
+        row = ((m2 * xpa) / g_const, (m2 * ypa) / g_const, 0.0, (m1 * (xaa[n] * c2[n] + yaa[n] * s2[n])) / g_const,
+               p5 / g_const, p6 / g_const, p7 / g_const, 0.0)
+        for i in range(8):
+            loads[n, i] = row[i] if plus_m_a else -row[i]                          # D018
+    return loads
 
 
 def case2_source(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = None,
@@ -78,7 +98,7 @@ def case2_source(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = No
     expect("quirks", quirks, Quirks)
     real4 = quirks.real4_storage
     alp = _pi(quirks) / 3.0 if alp is None else alp
-    mech = source_mechanics(deg, lengths, alp, rpm, quirks, speed_type="REAL")
+    mech = _source_linkage(deg, lengths, alp, rpm, quirks, "REAL").path_point(lengths.l2)
     sec = section.as_listing_holds(real4)
     dens = as_real4("density", density) if real4 else density
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
@@ -104,16 +124,11 @@ def case2_cognate(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = N
     expect("section", section, Section)
     expect("quirks", quirks, Quirks)
     real4 = quirks.real4_storage
-    mech = cognate_mechanics(deg, lengths, alp, rpm, quirks)
+    mech = _cognate_linkage(deg, lengths, alp, rpm, quirks).path_point()
     cog, e = mech.extra["cognate"], mech.extra
-    om2, om3, alph3, t2, t3 = e["om2"], e["om3"], e["alph3"], e["t2"], e["t3"]
     sec = section.as_listing_holds(real4)
     dens = as_real4("density", density) if real4 else density
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        xaa, yaa = -(cog.cl1 * libm.cos(t2) * om2 * om2), -(cog.cl1 * libm.sin(t2) * om2 * om2)
-        xba = xaa + (cog.cl3 * om3 * om3 * libm.cos(t3)) + (cog.cl3 * alph3 * libm.sin(t3))
-        yba = yaa + (cog.cl3 * om3 * om3 * libm.sin(t3)) - (cog.cl3 * alph3 * libm.cos(t3))
-        e.update(acc_a=np.stack([xaa, yaa], -1), acc_b=np.stack([xba, yba], -1))
         # the cognate's links as they are (a degenerate cognate may have zero or NaN lengths)
         cog_lengths = SimpleNamespace(l1=cog.cl1, l2=cog.cl2, l3=cog.cl3, l4=cog.cl4, l5=cog.cl5)
         loads = store(joint_loads(mech, cog_lengths, dens, sec.area, quirks), real4)

@@ -13,7 +13,10 @@ a structural model: the extender is n beam segments in series (L2/n long), every
 node loads the whole structure, and the tip deflection is their superposition
 (unit-load method), each node carrying its own segment's weight density*area*L2/n.
 Units: inch, pound-force, second; degrees for ``deg``.  Arguments and errors as in
-``ked_case1``; ``n`` an integer 1..10000.
+``ked_case1``; ``n`` an integer 1..10000.  ``case3_linkage`` is the four-bar's motion over an
+angle grid, computed once; ``case3_on_linkage`` puts n nodes on it, for any n (the convergence
+study's sweep): ``case3_source`` is the two in one call.  The nodes' path points are computed
+a block of nodes at a time.
 """
 from __future__ import annotations
 
@@ -24,8 +27,8 @@ import numpy as np
 from ..checks import angles_deg, as_real4, parameter, weight_lbf
 from . import libm
 from .fourbar import Lengths, check_finite
-from .ked_case1 import (EXAMPLE, GRAVITY_IN, Section, _pi, cognate_mechanics, cramer_determinant, deflection,
-                        expect, flexibility, source_mechanics)
+from .ked_case1 import (EXAMPLE, GRAVITY_IN, GRAVITY_REAL4, Section, SourceLinkage, _cognate_linkage, _pi,
+                        _source_linkage, cramer_determinant, deflection, expect, flexibility)
 from .quirks import PRINTED, Quirks
 from .real4 import store
 
@@ -77,18 +80,36 @@ def node_weights(positions, l2, density, area, quirks: Quirks) -> np.ndarray:
     return np.full(len(positions), density * area * (l2 / len(positions)))
 
 
-def _load(mech, weight, quirks: Quirks) -> np.ndarray:
-    """P = (XPAk*Mk)/GC in double, stored REAL*4 by B(k)=Pk; +m*a as printed (D018)."""
-    g_const = float(np.float32(32.178) * np.float32(12.0)) if quirks.real4_storage else GRAVITY_IN
+def _load(acc, weight, quirks: Quirks) -> np.ndarray:
+    """P = (XPAk*Mk)/GC in double, stored REAL*4 by B(k)=Pk; +m*a as printed (D018): loads
+    (.., 3) for accelerations ``acc`` (.., 2) in/s^2 and weights (lbf) broadcasting against
+    ``acc[..., :1]``."""
+    g_const = GRAVITY_REAL4 if quirks.real4_storage else GRAVITY_IN
     sign = 1.0 if quirks.inertia_sign else -1.0
-    xpa, ypa = mech.acc.T
-    zero = np.zeros_like(xpa)
-    return store(np.stack([sign * ((xpa * weight) / g_const), sign * ((ypa * weight) / g_const), zero], -1),
-                 quirks.real4_storage)
+    load = np.zeros(acc.shape[:-1] + (3,))
+    load[..., :2] = sign * ((acc * weight) / g_const)
+    return store(load, quirks.real4_storage)
+
+
+#: Node-angle pairs whose path points the n-node models compute at once (bounds the memory).
+NODE_BLOCK_SIZE = 2**16
+
+
+def _node_blocks(linkage, positions):
+    """The nodes' path points a block of consecutive nodes at a time (Mechanics with a leading
+    node axis), each with the index of its first node: at most NODE_BLOCK_SIZE nodes x angles,
+    and at least four nodes, so that the first block holds the listing's nodes 1 to 4."""
+    size = max(4, NODE_BLOCK_SIZE // len(linkage.t2))
+    for start in range(0, len(positions), size):
+        yield start, linkage.path_point(positions[start:start + size, None])
 
 
 def _coupled_tip(mechs, loads, positions, lengths: Lengths, section: Section, quirks: Quirks):
     """Tip deflection (N, 3) of the extender as n segments in series, all nodes loaded.
+
+    ``positions`` (n,) are the nodes' distances from the crank pin, tip first (node_positions),
+    ``loads`` (n, N, 3) their loads, ``mechs`` their Mechanics in the same order: an iterable,
+    read once, of single nodes or of blocks of consecutive nodes (a leading node axis).
 
     Virtual work with unit loads at the tip: sum over elements of u^T F f.  Segment j
     (between nodes, outer node j) carries every load beyond it: axial, shear and the
@@ -96,74 +117,131 @@ def _coupled_tip(mechs, loads, positions, lengths: Lengths, section: Section, qu
     node's Case I reaction (rows f4..f8 of that node's beta).
     """
     ca, me, mi = section.area, section.modulus, section.inertia
+    reactions, tip, k = 0.0, None, 0
+    for mech in mechs:
+        beta = mech.beta.reshape((-1,) + mech.beta.shape[-3:])           # (nodes, N, 8, 3)
+        tip = (mech.extra["ext_angle"], beta[0]) if tip is None else tip
+        reactions = reactions + np.einsum("knij,knj->ni", beta[..., 3:8, :2], loads[k:k + len(beta), :, :2])
+        k += len(beta)
+    t, tip_beta = tip
+    c, s = libm.cos(t), libm.sin(t)
     ascending = np.argsort(positions)
     r = positions[ascending]                                  # node radii, pin outward
-    seg = np.diff(np.concatenate([[0.0], r]))                 # segment lengths
-    tip = mechs[int(np.argmax(positions))]
-    t = tip.extra["ext_angle"]
-    c, s = libm.cos(t), libm.sin(t)
+    h = np.diff(np.concatenate([[0.0], r]))                   # segment lengths
     loads = loads[ascending]                                  # (n, N, 3)
     axial = loads[..., 0] * c + loads[..., 1] * s             # (n, N)
     shear = -loads[..., 0] * s + loads[..., 1] * c
     outward = lambda v: np.cumsum(v[::-1], axis=0)[::-1]      # noqa: E731  sum over nodes k >= j
     n_force, v_force = outward(axial), outward(shear)
     m_force = outward(shear * r[:, None]) - r[:, None] * v_force
-    rows = sum(mechs[k].beta[:, 3:8, :2] @ loads[j, :, :2, None] for j, k in enumerate(ascending))[..., 0]
-    l_tip = r[-1]
-    delta = np.zeros((len(t), 3))
-    unit = {0: (c, -s, 0.0), 1: (s, c, 0.0), 2: (0.0 * c, 0.0 * c, 1.0)}
+    # each segment's work under a unit axial force, shear and moment at the tip (the shear's
+    # moment about node j has the arm l_tip - r_j), summed over the segments
+    arm = r[-1] - r
+    axial_work = (h / (ca * me)) @ n_force
+    shear_work = (h ** 3 / (3 * me * mi)) @ v_force + (h ** 2 / (2 * me * mi)) @ m_force
+    moment_work = (h ** 2 / (2 * me * mi)) @ v_force + (h / (me * mi)) @ m_force
+    arm_work = (arm * h ** 2 / (2 * me * mi)) @ v_force + (arm * h / (me * mi)) @ m_force
     e_flex = np.array([lengths.l1 / (ca * me),
                        lengths.l1 * lengths.l1 * lengths.l1 / (3.0 * (ca if quirks.input_link_bending_area else mi) * me),
                        lengths.l4 / (ca * me), lengths.l3 / (ca * me), lengths.l3 / (3.0 * me * mi)])
-    for i, (un, uv, um) in unit.items():
-        for j, h in enumerate(seg):
-            uv_j, um_j = uv * np.ones_like(t), um + (l_tip - r[j]) * uv
-            delta[:, i] += un * n_force[j] * h / (ca * me)
-            delta[:, i] += uv_j * (v_force[j] * h ** 3 / (3 * me * mi) + m_force[j] * h ** 2 / (2 * me * mi))
-            delta[:, i] += um_j * (v_force[j] * h ** 2 / (2 * me * mi) + m_force[j] * h / (me * mi))
-        delta[:, i] += np.einsum("ne,e,ne->n", tip.beta[:, 3:8, i], e_flex, rows)
+    delta = np.zeros((len(t), 3))
+    for i, (un, uv, um) in enumerate(((c, -s, 0.0), (s, c, 0.0), (0.0, 0.0, 1.0))):   # unit loads at the tip
+        delta[:, i] = un * axial_work + uv * (shear_work + arm_work) + um * moment_work
+        delta[:, i] += np.einsum("ne,e,ne->n", tip_beta[:, 3:8, i], e_flex, reactions)
     return delta
 
 
-def _listing_blocks(mechs, quirks: Quirks):
+def _listing_blocks(mech, start: int, quirks: Quirks):
     """The listing's two copies of beta* (statements 0105-0147 for GMTRA, 0384-0426 for the
-    product), block by block: (left, right) per node, each (N, 8, 3).
+    product) for a block of nodes from node ``start`` (0: the tip) on: (left, right), each
+    (nodes, N, 8, 3).
 
     Rows f7 are written with the listing's association (L2k/L3 or L2/L3 as it groups them),
     and D036: the first copy holds U(470)=(A1*D1-B1*I1)/R4, the second (A1*D1-B1*E1)/R4, for
     node 4's (A1*E1-B1*D1)/R4.  D035 (block 1's third column in block 2's rows) is applied by
     the caller, on the products."""
-    blocks = []
-    tip_i1 = mechs[0].extra["coefficients"][8]
-    for k, mech in enumerate(mechs):
-        e = mech.extra
-        r, l3 = mech.flex_lengths[0], mech.flex_lengths[2]
-        ctx, s, c = e["ctx"], libm.sin(e["ext_angle"]), libm.cos(e["ext_angle"])
-        left, right = mech.beta.copy(), mech.beta.copy()
-        left[:, 6, 0] = ((ctx * s) * r) / l3                  # U(7)=CTX*DSIN(T3+ALP)*L2/L3 (... L21/L3)
-        if k:
-            right[:, 6, 0] = left[:, 6, 0]
-            left[:, 6, 1] = right[:, 6, 1] = -(((ctx * c) * r) / l3)   # -(CTX*DCOS(T3+ALP))*L21/L3
-        if k == 3 and quirks.u470_operands:                                         # D036
-            a, b, _, d, e1, *_ = e["coefficients"]
-            r4 = cramer_determinant(*e["coefficients"])
-            left[:, 5, 2] = ((a * d) - (b * tip_i1)) / r4
-            right[:, 5, 2] = ((a * d) - (b * e1)) / r4
-        blocks.append((left, right))
-    return blocks
+    link = mech.extra["linkage"]
+    r, l3 = mech.flex_lengths[0], mech.flex_lengths[2]       # r: (nodes, 1)
+    ctx, s, c = link.ctx, link.se, link.ce
+    left, right = mech.beta.copy(), mech.beta.copy()
+    left[..., 6, 0] = ((ctx * s) * r) / l3                    # U(7)=CTX*DSIN(T3+ALP)*L2/L3 (... L21/L3)
+    inner = slice(1 if start == 0 else 0, None)               # nodes 2, 3, ...
+    right[inner, :, 6, 0] = left[inner, :, 6, 0]
+    left[inner, :, 6, 1] = right[inner, :, 6, 1] = -(((ctx * c) * r[inner]) / l3)   # -(CTX*DCOS(T3+ALP))*L21/L3
+    if start == 0 and len(r) > 3 and quirks.u470_operands:                          # D036
+        a, b, c3, d, e, f, g, h, i = mech.extra["coefficients"]
+        r4 = cramer_determinant(a, b, c3, d, e, f, g[3], h[3], i[3])
+        left[3, :, 5, 2] = ((a * d) - (b * i[0])) / r4
+        right[3, :, 5, 2] = ((a * d) - (b * e)) / r4
+    return left, right
 
 
-def _listing_deflections(mechs, loads, positions, lengths: Lengths, section: Section, quirks: Quirks):
+def _listing_deflections(linkage, positions, weights, section: Section):
     """dx, dy, rot of every node (N, n, 3) as the listing's block-diagonal product gives them
     (D034), MPRD's order and REAL*4 storage: blocks do not mix, but for D035, the tip
     rotation taken with block 1's third column through node 2's F and beta."""
-    flex = [flexibility(r, lengths.l1, lengths.l3, lengths.l4, section, quirks, modulus_first=True)
-            for r in positions]                                   # B(165)=(L1*L1*L1)/(3.0*CE*CI)
-    blocks = _listing_blocks(mechs, quirks)
-    nodes = [deflection(left, flex[k], loads[k], quirks, right=right) for k, (left, right) in enumerate(blocks)]
-    if len(mechs) > 1 and quirks.tip_rotation_node_2:                               # D035
-        nodes[0][:, 2] = deflection(blocks[0][0][:, :, 2:3], flex[1], loads[1], quirks, right=blocks[1][1])[:, 0]
-    return np.stack([d.astype(np.float64) for d in nodes], axis=1)
+    quirks, lengths = linkage.quirks, linkage.lengths
+    nodes = []
+    for start, mech in _node_blocks(linkage, positions):
+        r = mech.flex_lengths[0]
+        flex = flexibility(r, lengths.l1, lengths.l3, lengths.l4, section, quirks,
+                           modulus_first=True)                    # B(165)=(L1*L1*L1)/(3.0*CE*CI)
+        left, right = _listing_blocks(mech, start, quirks)
+        loads = _load(mech.acc, weights[start:start + len(r), None, None], quirks)
+        block = deflection(left, flex, loads, quirks, right=right)
+        if start == 0 and len(positions) > 1 and quirks.tip_rotation_node_2:        # D035
+            block[0, :, 2] = deflection(left[0, :, :, 2:3], flex[1], loads[1], quirks, right=right[1])[:, 0]
+        nodes.append(block)
+    return np.moveaxis(np.concatenate(nodes).astype(np.float64), 0, 1)
+
+
+def case3_linkage(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = None,
+                  rpm: float = EXAMPLE.rpm, quirks: Quirks = LISTING):
+    """The source four-bar's motion over ``deg`` as Case III takes it (the listing's REAL*4
+    speed; ``alp`` by default 60 deg with the listing's pi): a SourceLinkage, to be computed
+    once for an angle grid and given to case3_on_linkage for every n (its quirks go with it)."""
+    return _case3_linkage(angles_deg("deg", deg), lengths, alp, rpm, quirks)
+
+
+def _case3_linkage(deg: np.ndarray, lengths: Lengths, alp: float | None, rpm: float, quirks: Quirks):
+    """case3_linkage of checked angles ``deg``."""
+    expect("quirks", quirks, Quirks)
+    alp = _pi(quirks) / 3.0 if alp is None else alp
+    return _source_linkage(deg, lengths, alp, rpm, quirks, "REAL")
+
+
+def _nodes(n, l2: float, density, section: Section, quirks: Quirks, all_nodes: bool):
+    """The section as the listing holds it, the nodes' positions (tip first) and weights."""
+    sec = section.as_listing_holds(quirks.real4_storage)
+    dens = as_real4("density", density) if quirks.real4_storage else density
+    listing = quirks.uncoupled_nodes                                                # D034
+    if all_nodes and not listing:
+        raise ValueError("all_nodes is the uncoupled (listing) model's output")
+    positions = node_positions(l2, n, LISTING_EXTENDER / n if listing else None)
+    return sec, positions, node_weights(positions, l2, dens, sec.area, quirks)
+
+
+def _case3_on(linkage, sec: Section, positions, weights, all_nodes: bool) -> dict:
+    """Case III's tip (and with ``all_nodes`` every node) on a linkage; see case3_source."""
+    quirks, deg = linkage.quirks, linkage.deg
+    listing = quirks.uncoupled_nodes                                                # D034
+    xp, yp = linkage.position(positions[0])
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        if listing:
+            nodes = _listing_deflections(linkage, positions, weights, sec)
+            tip = nodes[:, 0, :]
+        else:
+            loads = _load(linkage.acceleration(positions[:, None]), weights[:, None, None], quirks)
+            blocks = (mech for _, mech in _node_blocks(linkage, positions))
+            tip = _coupled_tip(blocks, loads, positions, linkage.lengths, sec, quirks)
+    out = {"xp": xp, "yp": yp, "dx": tip[:, 0], "dy": tip[:, 1], "rot": tip[:, 2]}
+    if listing:     # the listing's output is every node: the legacy face checks xp, yp, then all nodes
+        check_finite(deg, "case III source", xp=out["xp"], yp=out["yp"], nodes=nodes)
+        if all_nodes:
+            out["nodes"] = nodes
+    else:
+        check_finite(deg, "case III source", **out)
+    return out
 
 
 def case3_source(deg, n: int = 5, lengths: Lengths = EXAMPLE.lengths, alp: float | None = None,
@@ -177,6 +255,7 @@ def case3_source(deg, n: int = 5, lengths: Lengths = EXAMPLE.lengths, alp: float
     The uncoupled (listing) model places its nodes 10/n in apart (2 in for the listing's
     five: ValueError unless l2 > 10 (n-1)/n, 8 in for n = 5) and computes every node, as
     the listing does: a non-finite value at any node is a SingularPositionError there.
+    The same as case3_on_linkage(case3_linkage(deg, lengths, alp, rpm, quirks), n, ...).
     """
     deg = angles_deg("deg", deg)
     n = node_count(n)
@@ -184,32 +263,20 @@ def case3_source(deg, n: int = 5, lengths: Lengths = EXAMPLE.lengths, alp: float
     expect("lengths", lengths, Lengths)
     expect("section", section, Section)
     expect("quirks", quirks, Quirks)
-    real4 = quirks.real4_storage
-    alp = _pi(quirks) / 3.0 if alp is None else alp
-    sec = section.as_listing_holds(real4)
-    dens = as_real4("density", density) if real4 else density
-    listing = quirks.uncoupled_nodes                                                # D034
-    if all_nodes and not listing:
-        raise ValueError("all_nodes is the uncoupled (listing) model's output")
-    positions = node_positions(lengths.l2, n, LISTING_EXTENDER / n if listing else None)
-    weights = node_weights(positions, lengths.l2, dens, sec.area, quirks)
-    mechs = [source_mechanics(deg, Lengths(lengths.l1, r, lengths.l3, lengths.l4, lengths.l5),
-                              alp, rpm, quirks, speed_type="REAL") for r in positions]
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        loads = [_load(mech, weight, quirks) for mech, weight in zip(mechs, weights)]
-        if listing:
-            nodes = _listing_deflections(mechs, loads, positions, lengths, sec, quirks)
-            tip = nodes[:, 0, :]
-        else:
-            tip = _coupled_tip(mechs, np.array(loads), positions, lengths, sec, quirks)
-    out = {"xp": mechs[0].xp, "yp": mechs[0].yp, "dx": tip[:, 0], "dy": tip[:, 1], "rot": tip[:, 2]}
-    if listing:     # the listing's output is every node: the legacy face checks xp, yp, then all nodes
-        check_finite(deg, "case III source", xp=out["xp"], yp=out["yp"], nodes=nodes)
-        if all_nodes:
-            out["nodes"] = nodes
-    else:
-        check_finite(deg, "case III source", **out)
-    return out
+    sec, positions, weights = _nodes(n, lengths.l2, density, section, quirks, all_nodes)
+    return _case3_on(_case3_linkage(deg, lengths, alp, rpm, quirks), sec, positions, weights, all_nodes)
+
+
+def case3_on_linkage(linkage: SourceLinkage, n: int = 5, density: float = DENSITY,
+                     section: Section = EXAMPLE.section, all_nodes: bool = False) -> dict:
+    """case3_source on a linkage from case3_linkage (its angles, lengths and quirks): the
+    four-bar's kinematics computed once for an angle grid, reused for every n and section."""
+    expect("linkage", linkage, SourceLinkage)
+    n = node_count(n)
+    density = weight_lbf("density", density)
+    expect("section", section, Section)
+    sec, positions, weights = _nodes(n, linkage.lengths.l2, density, section, linkage.quirks, all_nodes)
+    return _case3_on(linkage, sec, positions, weights, all_nodes)
 
 
 def case3_cognate(deg, n: int = 5, lengths: Lengths = EXAMPLE.lengths, alp: float | None = None,
@@ -230,22 +297,24 @@ def case3_cognate(deg, n: int = 5, lengths: Lengths = EXAMPLE.lengths, alp: floa
     real4 = quirks.real4_storage
     sec = section.as_listing_holds(real4)
     dens = as_real4("density", density) if real4 else density
-    tip_mech = cognate_mechanics(deg, lengths, alp, rpm, quirks)
+    tip_mech = _cognate_linkage(deg, lengths, alp, rpm, quirks).path_point()
     cog = tip_mech.extra["cognate"]
-    with np.errstate(invalid="ignore", over="ignore"):      # a degenerate cognate's CL2 may be inf
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):     # a degenerate cognate's CL2 may be inf
         positions = cog.cl2 - np.arange(n) * (cog.cl2 / n)   # node_positions, unchecked: only the tip's is used
-    weights = node_weights(positions, cog.cl2, dens, sec.area, quirks)
-    # the cognate's links as they are (a degenerate cognate may have zero or NaN lengths)
-    cog_lengths = SimpleNamespace(l1=cog.cl1, l2=cog.cl2, l3=cog.cl3, l4=cog.cl4, l5=cog.cl5)
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        weights = node_weights(positions, cog.cl2, dens, sec.area, quirks)
+        # the cognate's links as they are (a degenerate cognate may have zero or NaN lengths)
+        cog_lengths = SimpleNamespace(l1=cog.cl1, l2=cog.cl2, l3=cog.cl3, l4=cog.cl4, l5=cog.cl5)
         if quirks.uncoupled_nodes:                                                  # D034
             flex = flexibility(cog.cl2, cog.cl1, cog.cl3, cog.cl4, sec, quirks)
-            delta = deflection(tip_mech.beta, flex, _load(tip_mech, weights[0], quirks), quirks)
+            delta = deflection(tip_mech.beta, flex, _load(tip_mech.acc, weights[0], quirks), quirks)
         else:
-            mechs = [tip_mech] + [cognate_mechanics(deg, lengths, alp, rpm, quirks, extender=r)
-                                  for r in positions[1:]]
-            loads = np.array([_load(m, w, quirks) for m, w in zip(mechs, weights)])
-            delta = _coupled_tip(mechs, loads, positions, cog_lengths, sec, quirks)
+            inner = positions[1:]
+            if not np.isfinite(inner).all():        # as cognate_mechanics(extender=...) refuses a node there
+                parameter("extender", inner[~np.isfinite(inner)][0], largest=None)
+            linkage = tip_mech.extra["linkage"]
+            loads = _load(linkage.acceleration(positions[:, None]), weights[:, None, None], quirks)
+            blocks = (mech for _, mech in _node_blocks(linkage, positions))
+            delta = _coupled_tip(blocks, loads, positions, cog_lengths, sec, quirks)
     mech = tip_mech
     dx, dy = delta[:, 0].astype(np.float64), delta[:, 1].astype(np.float64)
     if not quirks.cognate_frame:                                                     # D025
@@ -258,4 +327,4 @@ def case3_cognate(deg, n: int = 5, lengths: Lengths = EXAMPLE.lengths, alp: floa
 
 
 __all__ = ["LISTING", "COGNATE_LISTING", "DENSITY", "node_positions", "node_weights", "case3_source",
-           "case3_cognate", "LISTING_EXTENDER", "MAX_NODES", "node_count"]
+           "case3_linkage", "case3_on_linkage", "case3_cognate", "LISTING_EXTENDER", "MAX_NODES", "node_count"]
