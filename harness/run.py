@@ -163,12 +163,13 @@ def _interrupt_deferred():
 
 def _run_groups(groups: list[list[str]], out_dir: Path, measure_readings: bool) -> dict:
     """Every group's results: one process per group, as many at once as there are cores
-    (spawned, so that nothing compiled or locked here is shared); else here, in turn.
+    (forked where the system can: this process has imported everything and compiled nothing,
+    so a worker starts at once; else spawned); else here, in turn.
     On a Ctrl-C (or any error) every worker is terminated and joined before it goes on."""
     workers = min(len(groups), os.cpu_count() or 1)
     if workers < 2 or os.environ.get(IN_POOL_ENV):
         return {k: v for names in groups for k, v in _run_group(names, out_dir, measure_readings).items()}
-    context = multiprocessing.get_context("spawn")
+    context = multiprocessing.get_context("fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn")
     queue, waiting, running, results = context.Queue(), list(enumerate(groups)), {}, {}
     try:
         while waiting or running:
