@@ -11,7 +11,7 @@ reproduce: $(VENV)/.installed
 	$(BIN)/linkrepro reproduce --out out
 
 test: $(VENV)/.installed
-	$(BIN)/python -m pytest -q tests
+	$(BIN)/python -m pytest -q -n auto tests
 
 bench: $(VENV)/.installed
 	$(BIN)/linkrepro bench
