@@ -47,8 +47,10 @@ def compare_csv(before: Path, after: Path, tol: float) -> tuple[float, list[str]
             worst = max(worst, rel)
             if rel > tol:
                 problems.append(f"{col}: relative difference {rel:.3g} where both are finite")
-        elif not x.astype(str).equals(y.astype(str)):
-            problems.append(f"{col}: text differs in {int((x.astype(str) != y.astype(str)).sum())} rows")
+        else:
+            xs, ys = (v.astype(object).where(v.notna(), "").astype(str) for v in (x, y))   # missing = ""
+            if not xs.equals(ys):
+                problems.append(f"{col}: text differs in {int((xs != ys).sum())} rows")
     return worst, problems
 
 
