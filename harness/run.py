@@ -12,7 +12,7 @@ from queue import Empty
 
 import pandas as pd
 
-from . import appendix, case3_convergence, progress, rahman1991, rahman1996_figures, readings, register as register_mod
+from . import appendix, case3_convergence, identities, progress, rahman1991, rahman1996_figures, readings, register as register_mod
 from .csv_output import write_csv
 from .diff import diff_scene, summary
 from .engines import ENGINES, PrintedProgramError
@@ -92,6 +92,11 @@ def run_scene(name: str, out_dir: Path, measure_readings: bool = True) -> dict:
     write_csv(diff, target / "diff.csv", "%.9g")
     plots = plot_scene(scene, published, results, target)
     extra = "\n".join(f"**{f}**" for f in failures)
+    sums = identities.sum_checks(scene.table, published)
+    if len(sums):                              # the table's own arithmetic
+        sums = identities.with_register(sums, diff)
+        write_csv(sums, target / "identities.csv", "%.9g")
+        extra += "\n\n" + identities.as_markdown(sums)
     if readings.has_readings(scene.table):     # an empty measurement says why it is empty
         extra += "\n\n" + (readings.as_markdown(readings.measure(scene.table)) if measure_readings else
                            "## Reading alternatives\n\nNot measured (skipped on request: --skip-readings).")
