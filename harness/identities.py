@@ -11,7 +11,6 @@ the engines can.
 """
 from __future__ import annotations
 
-import numpy as np
 import pandas as pd
 
 from .published_tables import PublishedTable
@@ -72,7 +71,3 @@ def as_markdown(checks: pd.DataFrame) -> str:
     lines += [f"| {r.input_deg:g} | {r.sum_column} | {r.printed_sum:.3f} | {r.sum_of_printed_terms:.3f} | "
               f"{r.gap:.4g} | {r.rounding_bound:.4g} | {r.register_ids or '(none)'} |" for r in bad.itertuples()]
     return "\n".join(lines)
-
-
-def misprint_count(checks: pd.DataFrame) -> int:
-    return int(np.sum(checks["verdict"] == "misprint")) if len(checks) else 0
