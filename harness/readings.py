@@ -4,6 +4,8 @@ For every register entry with ``[[deviation.reading]]`` items, the printed
 listing is rebuilt with the scan's literal text put back, compiled with gfortran
 like the printed engine, run, and its deflection columns compared with the
 published table.  This is the measured evidence behind each uncertain reading.
+A listing that cannot print its result as printed (the Case II cognate, D037) is
+measured on its src program with a driver (``DRIVERS``).
 Needs gfortran on PATH: without it (or when it cannot build the listing as printed)
 ``measure`` raises ``CompilerError``; ``linkrepro reproduce`` checks for it before
 the run starts (``require_compiler``) and skips the measurement only when asked to
@@ -26,13 +28,43 @@ from .published_tables import PublishedTable
 from .register import REGISTER_PATH
 
 PRINTED_DIR = Path(__file__).resolve().parent.parent / "legacy" / "printed"
+SRC_DIR = PRINTED_DIR.parent / "src"
 FLAGS = ["-std=legacy", "-fno-automatic", "-ffp-contract=off", "-fno-fast-math", "-O1"]
 #: the published table and columns each printed program's WRITE gives
 COLUMNS = {"ali1977_case1_source.f": ("ali1977_table1", ("src_dx", "src_dy")),
            "ali1977_case1_cognate.f": ("ali1977_table1", ("cog_dx", "cog_dy")),
            "ali1977_case2_source.f": ("ali1977_table2", ("src_dx", "src_dy")),
+           "ali1977_case2_cognate.f": ("ali1977_table2", ("cog_dx", "cog_dy")),
            "ali1977_case3_source.f": ("ali1977_table3", ("src_dx", "src_dy"))}
 SSP = ["ssp_gmtra.f", "ssp_mprd.f", "ssp_loc.f"]
+#: A listing whose printed text cannot give its result (the Case II cognate's page with the
+#: loads is missing, D037) is measured on its src program, the page reconstructed, called by
+#: a driver with the printed inputs that WRITEs what the listing's statement 200 would.
+DRIVERS = {"ali1977_case2_cognate.f": """\
+      PROGRAM DRIVE
+      DOUBLE PRECISION PI,ALP,DEG(19),XP(19),YP(19),CXP(19),CYP(19),
+     *CXX(19),CYY(19),CRT(19),S,DNTY,CCA,CME,CMI,L1,L2,L3,L4,L5
+      REAL DSTEP
+      PI=3.142857143
+      ALP=PI/3.0
+      L1=10.0
+      L2=10.0
+      L3=30.0
+      L4=25.0
+      L5=30.0
+      S=300.0
+      DNTY=0.098
+      CCA=0.1963495408
+      CME=10000000.0
+      CMI=0.0030679615
+      DSTEP=20.0
+      CALL KED2C(L1,L2,L3,L4,L5,ALP,S,DNTY,CCA,CME,CMI,DSTEP,19,DEG,XP,
+     *YP,CXP,CYP,CXX,CYY,CRT,ISTAT)
+      DO 10 I=1,19
+   10 WRITE(6,200)DEG(I),CXX(I),CYY(I),CRT(I)
+  200 FORMAT(1H0,5X,F12.6,8X,F12.6,8X,F12.6,8X,F12.6)
+      END
+"""}
 COMPILER = "gfortran"
 COMPILE_TIMEOUT_S = 120
 
@@ -76,11 +108,12 @@ def _first_error(stderr: str) -> str:
     return next((line for line in lines if "error" in line.lower()), lines[-1] if lines else "no message")
 
 
-def _compile(src: Path, exe: Path) -> None:
+def _compile(src: Path, exe: Path, *extra: Path) -> None:
     """Build one listing as the printed engine is built.  ``CalledProcessError``: the text
     does not compile (a scan's literal text may not); ``CompilerError``: gfortran cannot run."""
     try:
-        subprocess.run([COMPILER, *FLAGS, "-o", str(exe), str(src), *[str(PRINTED_DIR / s) for s in SSP]],
+        subprocess.run([COMPILER, *FLAGS, "-o", str(exe), str(src), *map(str, extra),
+                        *[str(PRINTED_DIR / s) for s in SSP]],
                        check=True, capture_output=True, text=True, timeout=COMPILE_TIMEOUT_S)
     except subprocess.TimeoutExpired as exc:
         raise CompilerError(f"{COMPILER} did not finish building {src.name} in {COMPILE_TIMEOUT_S} s") from exc
@@ -94,7 +127,7 @@ def _printed_dir() -> Path | None:
 
 
 def _run_variant(program: str, edits: list[dict], workdir: Path) -> pd.DataFrame:
-    text = (PRINTED_DIR / program).read_text()
+    text = ((SRC_DIR if program in DRIVERS else PRINTED_DIR) / program).read_text()
     for edit in edits:
         chosen, scan, nth = edit["chosen"], edit["scan"], int(edit.get("occurrence", 1))
         parts = text.split(chosen + "\n")
@@ -104,7 +137,11 @@ def _run_variant(program: str, edits: list[dict], workdir: Path) -> pd.DataFrame
     src = workdir / program
     src.write_text(text)
     exe = workdir / "variant"
-    _compile(src, exe)
+    drivers = []
+    if program in DRIVERS:
+        drivers.append(workdir / "driver.f")
+        drivers[0].write_text(DRIVERS[program])
+    _compile(src, exe, *drivers)
     done = subprocess.run([str(exe)], capture_output=True, text=True, timeout=60)
     return parse_printed_output(done.stdout).drop_duplicates("deg").set_index("deg")
 

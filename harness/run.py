@@ -12,7 +12,7 @@ from queue import Empty
 
 import pandas as pd
 
-from . import appendix, case3_convergence, identities, progress, rahman1991, rahman1996_figures, readings, register as register_mod
+from . import appendix, case3_convergence, cognate_search, identities, progress, rahman1991, rahman1996_figures, readings, register as register_mod
 from .csv_output import write_csv
 from .diff import diff_scene, summary
 from .engines import ENGINES, PrintedProgramError
@@ -97,6 +97,11 @@ def run_scene(name: str, out_dir: Path, measure_readings: bool = True) -> dict:
         sums = identities.with_register(sums, diff)
         write_csv(sums, target / "identities.csv", "%.9g")
         extra += "\n\n" + identities.as_markdown(sums)
+    case = cognate_search.case_of(scene.table)
+    if case:                                   # the search over the reconstructed cognate loads
+        found = cognate_search.search(case)
+        write_csv(found, target / "cognate_search.csv", "%.9g")
+        extra += "\n\n" + cognate_search.as_markdown(found)
     if readings.has_readings(scene.table):     # an empty measurement says why it is empty
         extra += "\n\n" + (readings.as_markdown(readings.measure(scene.table)) if measure_readings else
                            "## Reading alternatives\n\nNot measured (skipped on request: --skip-readings).")

@@ -32,6 +32,9 @@ LISTING = PRINTED.without("source_alpha_101", "source_rpm_400", "cognate_frame",
 COGNATE_LISTING = PRINTED.without("source_alpha_101", "source_rpm_400", "i_coefficient", "g_coefficient",
                                   "omega3_sign", "node_mass_from_pin", "uncoupled_nodes")
 DENSITY = 0.098          # lbf/in^3, aluminium (DNTY)
+#: The crossed cognate's coupler axis from its crank pin: -e3 (B' = A' - CL3 e3), the axis
+#: the printed page's column 7, U(52)=DCOS(CT3-T2), U(53)=DSIN(CT3-T2), decomposes (D037).
+COGNATE_COUPLER = -1.0
 
 
 _P4_TO_P8 = np.arange(3, 8)
@@ -51,23 +54,27 @@ def beta2(mech, quirks: Quirks, cognate: bool = False) -> np.ndarray:
     return right
 
 
-def joint_loads(mech, lengths: Lengths, density: float, area: float, quirks: Quirks) -> np.ndarray:
+def joint_loads(mech, lengths: Lengths, density: float, area: float, quirks: Quirks,
+                coupler: float = 1.0) -> np.ndarray:
     """P1..P8 (N, 8) in lbf, as the listing forms them (statements 56-72); the pins'
-    accelerations are the linkage's (``mech.extra["linkage"].pin_accelerations()``)."""
+    accelerations are the linkage's (``mech.extra["linkage"].pin_accelerations()``).
+    ``coupler`` (+1 or -1): the direction of the coupler's axis from the crank pin, +e3 as in
+    the source (B = A + L3 e3), -e3 for the crossed cognate (B' = A' - CL3 e3): P7 is the
+    coupler mass's load along that axis, the axis beta2's column 7 decomposes."""
     link = mech.extra["linkage"]
     (xaa, yaa), (xba, yba) = link.pin_accelerations()
     m1, m2, m3, m4 = (density * (area * length) for length in (lengths.l1, lengths.l2, lengths.l3, lengths.l4))
     return _joint_loads(np.ascontiguousarray(mech.acc), xaa, yaa, xba, yba, link.c2, link.s2, link.c3, link.s3,
                         link.c4, link.s4, m1, m2, m3, m4, GRAVITY_REAL4 if quirks.real4_storage else GRAVITY_IN,
-                        quirks.real4_storage, quirks.joint_load_components, quirks.inertia_sign)
+                        quirks.real4_storage, quirks.joint_load_components, quirks.inertia_sign, coupler)
 
 
 @njit(cache=True, error_model="numpy")
 def _joint_loads(acc, xaa, yaa, xba, yba, c2, s2, c3, s3, c4, s4, m1, m2, m3, m4, g_const, real4, components,
-                 plus_m_a):
+                 plus_m_a, coupler):
     """joint_loads at each input angle (compiled as ked_case1's kernels are): the path point's
     XPA, YPA (in/s^2, REAL*4 with ``real4``), the pins' XAA..YBA, the cos and sin of t2, t3, t4,
-    the links' weights m1..m4 (lbf) and g (in/s^2)."""
+    the links' weights m1..m4 (lbf), g (in/s^2) and the coupler's direction (joint_loads)."""
     loads = np.empty((c2.size, 8))
     for n in range(c2.size):
         xpa, ypa = acc[n, 0], acc[n, 1]
@@ -81,6 +88,7 @@ def _joint_loads(acc, xaa, yaa, xba, yba, c2, s2, c3, s3, c4, s4, m1, m2, m3, m4
             p5 = m1 * (-xaa[n] * s2[n] + yaa[n] * c2[n])
             p6 = m4 * (xba[n] * c4[n] + yba[n] * s4[n])
             p7 = m3 * (-xaa[n] * c3[n] - yaa[n] * s3[n])
+        p7 = coupler * p7                                                           # exact: a sign
         row = ((m2 * xpa) / g_const, (m2 * ypa) / g_const, 0.0, (m1 * (xaa[n] * c2[n] + yaa[n] * s2[n])) / g_const,
                p5 / g_const, p6 / g_const, p7 / g_const, 0.0)
         for i in range(8):
@@ -117,7 +125,8 @@ def case2_cognate(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = N
     """Case II, crossed cognate: a RECONSTRUCTION (D037).  The listing's page with the loads
     is missing; its loads are the source listing's (joint_loads) on the cognate's links
     (density * area * CLk) and joints (crank pin A' = CL1 e^{i t2}, follower pin
-    B' = A' - CL3 e^{i t3*}), in the cognate's frame.  Returns ``xp, yp`` (source),
+    B' = A' - CL3 e^{i t3*}), in the cognate's frame, the coupler's load P7 along the
+    cognate's coupler axis (-e3, the axis the printed page's column 7 decomposes).  Returns ``xp, yp`` (source),
     ``cxp, cyp``, ``dx, dy`` (in) and ``rot`` (rad)."""
     deg = angles_deg("deg", deg)
     density = weight_lbf("density", density)
@@ -131,7 +140,7 @@ def case2_cognate(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = N
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         # the cognate's links as they are (a degenerate cognate may have zero or NaN lengths)
         cog_lengths = SimpleNamespace(l1=cog.cl1, l2=cog.cl2, l3=cog.cl3, l4=cog.cl4, l5=cog.cl5)
-        loads = store(joint_loads(mech, cog_lengths, dens, sec.area, quirks), real4)
+        loads = store(joint_loads(mech, cog_lengths, dens, sec.area, quirks, coupler=COGNATE_COUPLER), real4)
         flex = flexibility(cog.cl2, cog.cl1, cog.cl3, cog.cl4, sec, quirks)
         delta = deflection(mech.beta, flex, loads, quirks, right=beta2(mech, quirks, cognate=True))
     dx, dy = delta[:, 0].astype(np.float64), delta[:, 1].astype(np.float64)
@@ -144,4 +153,4 @@ def case2_cognate(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = N
     return out
 
 
-__all__ = ["LISTING", "COGNATE_LISTING", "DENSITY", "beta2", "joint_loads", "case2_source", "case2_cognate"]
+__all__ = ["LISTING", "COGNATE_LISTING", "DENSITY", "COGNATE_COUPLER", "beta2", "joint_loads", "case2_source", "case2_cognate"]

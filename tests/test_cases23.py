@@ -1,11 +1,13 @@
 """Cases II and III: the port against legacy, and against the theory's own reductions."""
+from types import SimpleNamespace
+
 import numpy as np
 import pytest
 
 from linkrepro import legacy
 from linkrepro.port import CORRECTED, Lengths, source_case1
 from linkrepro.port.ked_case1 import EXAMPLE, cognate_mechanics, deflection, flexibility, source_mechanics
-from linkrepro.port.ked_case2 import LISTING as CASE2, beta2, case2_cognate, case2_source, joint_loads
+from linkrepro.port.ked_case2 import COGNATE_COUPLER, LISTING as CASE2, beta2, case2_cognate, case2_source, joint_loads
 from linkrepro.port.ked_case3 import LISTING as CASE3, _coupled_tip, case3_cognate, case3_source, node_positions
 
 DEG = np.arange(0.0, 361.0, 1.0)
@@ -83,6 +85,31 @@ def test_case2_corrected_joint_loads_project_finite_difference_accelerations():
     np.testing.assert_allclose(loads[:, 3], -m1 * along(acc_a, t2) / g, atol=1e-5 * scale)
     np.testing.assert_allclose(loads[:, 4], -m1 * across(acc_a, t2) / g, atol=1e-5 * scale)
     np.testing.assert_allclose(loads[:, 5], -m4 * along(acc_b, t4) / g, atol=1e-5 * scale)
+
+
+@pytest.mark.parametrize("cognate", [False, True])
+def test_case2_coupler_load_and_its_column_name_the_same_axis(cognate):
+    """P7 times beta2's column 7 is the force the coupler's mass puts on the crank pin along the
+    coupler: -(m3/g) (a_A . e) e for the coupler's axis e, whichever way e points (the sign a
+    reconstruction of the cognate's lost page must get right, D037).  a_A by finite differences
+    of A = L1 e^{i t2}; the column's components along and across the crank turned back into x, y."""
+    deg = np.arange(5.0, 360.0, 35.0)
+    mechanics = cognate_mechanics if cognate else source_mechanics
+    kw = {} if cognate else {"speed_type": "REAL"}
+    mech = mechanics(deg, rpm=300.0, quirks=CORRECTED, **kw)
+    lengths = mech.extra["cognate"] if cognate else EXAMPLE.lengths
+    l1, l3 = (lengths.cl1, lengths.cl3) if cognate else (lengths.l1, lengths.l3)
+    links = SimpleNamespace(l1=l1, l2=0.0, l3=l3, l4=(lengths.cl4 if cognate else lengths.l4))
+    p7 = joint_loads(mech, links, DENSITY, AREA, CORRECTED, coupler=COGNATE_COUPLER if cognate else 1.0)[:, 6]
+    column = beta2(mech, CORRECTED, cognate=cognate)[:, 3:5, 6]
+    t2, t3 = mech.extra["t2"], mech.extra["t3"]
+    along, across = np.exp(1j * t2), 1j * np.exp(1j * t2)
+    force = p7 * (column[:, 0] * along + column[:, 1] * across)
+    acc_a = _fd_acceleration(lambda d: l1 * np.exp(1j * np.radians(d)), deg)
+    axis = np.exp(1j * t3)
+    expected = -(DENSITY * AREA * l3 / (12.0 * 32.178)) * (acc_a.real * axis.real + acc_a.imag * axis.imag) * axis
+    scale = np.abs(expected).max()
+    np.testing.assert_allclose(force, expected, atol=1e-5 * scale)
 
 
 def test_case3_with_one_node_is_case1_with_the_extender_at_the_tip():

@@ -310,6 +310,8 @@ C     THE FORCE TRANSFER MATRIX FOR COGNATE FOR CASE#2.
 C     [LINKREPRO] RECONSTRUCTION OF THE MISSING STATEMENTS 241-281: THE  ! D037
 C     CASE II SOURCE LISTING'S LOADS (ITS STATEMENTS 55-72) AND LAST     ! D037
 C     PRODUCT (258-277) WRITTEN FOR THE COGNATE'S LINKS AND JOINTS.      ! D037
+C     P7 ALONG THE COGNATE'S COUPLER AXIS -E3 (B'=A'-CL3*E3), THE AXIS   ! D037
+C     OF THE PRINTED PAGE'S U(52), U(53).                                ! D037
       GC=32.178*12.0                                                     ! D037
       CM1=DNTY*(CCA*CL1)                                                 ! D037
       CM2=DNTY*(CCA*CL2)                                                 ! D037
@@ -325,7 +327,7 @@ C     PRODUCT (258-277) WRITTEN FOR THE COGNATE'S LINKS AND JOINTS.      ! D037
       P4=(CM1*(CXAA*DCOS(T2)+CYAA*DSIN(T2)))/GC                          ! D037
       P5=(CM1*(CYAA*DSIN(T2)-CXAA*DCOS(T2)))/GC                          ! D037
       P6=(CM4*(CYBA*DSIN(CT4)-CXBA*DCOS(CT4)))/GC                        ! D037
-      P7=(CM3*(CYAA*DSIN(CT3)-CXAA*DCOS(CT3)))/GC                        ! D037
+      P7=(CM3*(CXAA*DCOS(CT3)-CYAA*DSIN(CT3)))/GC                        ! D037
       P8=0.0                                                             ! D037
       B(1)=P1                                                            ! D037
       B(2)=Z2                                                            ! D037
