@@ -11,6 +11,8 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from . import identities, register
+from .csv_output import write_csv
 from .published_tables import PUBLISHED_DIR, PublishedTable
 from .report import STYLE, curve_figure, draw_all
 from ..port.cssp_quirks import CSSP_CORRECTED, CSSP_PRINTED
@@ -70,13 +72,16 @@ def plot_figures(pct: pd.DataFrame, outdir: Path) -> list[Path]:
 
 
 def run(out_dir: Path) -> dict:
-    """Write out/rahman1996-figures/: percentages.csv, section5_3.csv, figures, report.md."""
+    """Write out/rahman1996-figures/: percentages.csv, section5_3.csv, identities.csv (section
+    5.3's quoted numbers against the published tables), figures, report.md."""
     target = out_dir / NAME
     target.mkdir(parents=True, exist_ok=True)
     pct = percentages()
     pct.to_csv(target / "percentages.csv", index=False, float_format="%.6g")
     stats = section_5_3(pct)
     stats.to_csv(target / "section5_3.csv", index=False, float_format="%.6g")
+    quoted = identities.percentage_checks(register.load())
+    write_csv(quoted, target / "identities.csv", "%.9g")
     plots = plot_figures(pct, target)
     lines = ["# Rahman (1996), Figures 5.1-5.6 and the percentages of section 5.3", "",
              "Decrement (before - after) * 100 / before at each of the 37 crank positions, as the listing "
@@ -91,6 +96,6 @@ def run(out_dir: Path) -> dict:
                      f"{r.min_pct:.4f} ({r.min_at_deg}) | {r.mean37_pct:.4f} | {r.mean36_pct:.4f} | "
                      f"{r.negative_at_deg} | {r.text_range}; {r.text_average} | {r.text_claim} |")
     lines += ["", "See register entries D058 (misprints that produce the published outliers) and D059 "
-              "(the averages).", "", "## Figures", ""] + [f"![{p.stem}]({p.name})" for p in plots]
+              "(the averages).", "", identities.percentages_markdown(quoted), "", "## Figures", ""] + [f"![{p.stem}]({p.name})" for p in plots]
     (target / "report.md").write_text("\n".join(lines) + "\n")
     return {"scene": NAME, "title": "Figures 5.1-5.6 and the percentages of section 5.3", "stats": stats}
