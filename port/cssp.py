@@ -21,12 +21,13 @@ import numpy as np
 
 from ..errors import QPError, SingularPositionError
 from . import qprog
-from .cssp_data import QP_EQUALITIES, QP_ROWS, Constants, CsspInputs
+from .cssp_data import QP_EQUALITIES, QP_ROWS, Constants, CsspInputs, qp_constraints
 from .cssp_listing import Carry, initial_estimate, listing_pass, unit_loads
 from .cssp_objective import UnitLoads, objective, position_forms, table_quantities
 from .cssp_quirks import CSSP_CORRECTED, CSSP_PRINTED, CsspQuirks
 
-__all__ = ["CsspInputs", "balance", "solve_qp", "hessian_shift", "CRANK_DEG", "CSSP_PRINTED", "CSSP_CORRECTED"]
+__all__ = ["CsspInputs", "balance", "solve_qp", "hessian_shift", "link_masses", "CRANK_DEG", "CSSP_PRINTED",
+           "CSSP_CORRECTED"]
 
 #: the listing's positions: TH1 = J*10 - 10, J = 1..37
 CRANK_DEG = np.arange(37) * 10.0
@@ -112,12 +113,14 @@ def balance(inputs: CsspInputs = CsspInputs(), quirks: CsspQuirks = CSSP_PRINTED
     c = Constants.of(inputs, quirks.cssp_real4)
     single = (lambda v: np.asarray(v, np.float32).astype(float)) if quirks.cssp_real4 else np.asarray
     counted = slice(0, 37 if quirks.objective_37_positions else 36)
+    rows, bounds, equalities = qp_constraints(c, quirks.qp_cg_masses_free, quirks.qp_data_rounded,
+                                              quirks.cssp_real4)
     passes, accumulated, solutions, first_qp = [], np.zeros((9, 9)), [], None
     for sweep in _passes(inputs, quirks, c):
         passes.append(sweep)
         accumulated = accumulated + sweep.forms[counted].sum(axis=0)
         hessian = single(2.0 * accumulated)
-        x, diag = solve_qp(hessian, bounds=c.qp_bounds)
+        x, diag = solve_qp(hessian, rows, bounds, equalities)
         solutions.append(single(x))
         first_qp = first_qp or (hessian, diag)
     last, after = passes[-1], solutions[0]
@@ -134,6 +137,16 @@ def balance(inputs: CsspInputs = CsspInputs(), quirks: CsspQuirks = CSSP_PRINTED
     return {"table": table, "inertia": _inertia_table(c, solutions[-1]),
             "solution": after, "solution_table51": solutions[-1], "hessian": first_qp[0],
             "diag": first_qp[1]}
+
+
+def link_masses(x) -> np.ndarray:
+    """Crank, connecting rod, slider: the sums of their point masses (eq. 4.4), lb*s^2/in.
+
+    The principal moments of Table 5.1 do not see x4 and x8 (the masses at the centres of
+    mass), so only these sums show what the QP did to the links' masses (register D130).
+    """
+    x = np.asarray(x, dtype=float)
+    return np.array([x[0:4].sum(), x[4:8].sum(), x[8]])
 
 
 def _inertia_table(c: Constants, x: np.ndarray) -> np.ndarray:

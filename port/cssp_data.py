@@ -34,6 +34,8 @@ QP_BOUNDS = (0.003688, 0.01475, 0.01553, 0.001168, 0.001168, 0.001168, 0.001168,
 QP_ROWS = np.vstack([[1, 1, 1, 0, 0, 0, 0, 0, 0], [0, 0, 0, 0, 1, 1, 1, 0, 0],
                      [0, 0, 0, 0, 0, 0, 0, 0, 1], np.eye(9)[:8]]).astype(float)
 QP_EQUALITIES = 3
+#: w' of eq. (4.5): "allowed to decrease by five percent" (section 5.2)
+MASS_DECREASE = 0.05
 
 
 #: the fields of CsspInputs that must be positive
@@ -133,3 +135,32 @@ def _arms(inertia, m) -> tuple:
     ix, iy, iz = inertia
     return (((iy + iz - ix) / (2.0 * m)) ** 0.5, ((ix + iz - iy) / (2.0 * m)) ** 0.5,
             ((ix + iy - iz) / (2.0 * m)) ** 0.5)
+
+
+def qp_constraints(c: "Constants", cg_masses_free: bool, data_rounded: bool, real4: bool):
+    """The balancing QP's constraints: (rows, right-hand sides, number of equalities).
+
+    As printed (``cg_masses_free``, register D130): x1+x2+x3 = b(1), x5+x6+x7 = b(2),
+    x9 = b(3), x1..x8 >= b(4..11), so the masses at the centres of mass, x4 and x8, may
+    fall to their bounds and the links lose mass.  Off: x4 and x8 keep their values
+    (m14, m24; equalities), so each link's mass stays constant as section 5.2 states.
+    ``data_rounded`` (D131): b is the listing's DATA b, typed to three or four digits
+    (x9 = 0.01553 where M3 = 6.0/386.4 = 0.0155280); off: b from the point masses and
+    w' of eq. (4.5).  ``real4``: b is REAL (the listing's QPROG entry is single precision).
+    """
+    pm = c.point_masses
+    if data_rounded:
+        b = np.array(QP_BOUNDS, dtype=float)
+    else:
+        b = np.concatenate([[pm[0:3].sum(), pm[4:7].sum(), pm[8]], (1.0 - MASS_DECREASE) * pm[:8]])
+    if real4:
+        b = b.astype(np.float32).astype(float)
+    if cg_masses_free:
+        return QP_ROWS, b, QP_EQUALITIES
+    unit = np.eye(9)
+    cg = np.array([pm[3], pm[7]])
+    if real4:
+        cg = cg.astype(np.float32).astype(float)
+    kept = [0, 1, 2, 4, 5, 6]                       # the pair masses keep their lower bounds
+    rows = np.vstack([QP_ROWS[:3], unit[[3, 7]], unit[kept]])
+    return rows, np.concatenate([b[:3], cg, b[3:][kept]]), QP_EQUALITIES + 2

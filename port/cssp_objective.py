@@ -69,13 +69,16 @@ def objective(forms: np.ndarray, x: np.ndarray, quirks: CsspQuirks, single: bool
 def table_quantities(loads: UnitLoads, x: np.ndarray, quirks: CsspQuirks) -> dict:
     """Shaking force, shaking moment, bearing force, bearing torque, input torque for masses x.
 
-    Bearing force = |R1 + R2 + R3 + R4| (eq. 3.16) and bearing torque = |M1 + M2 + M3 + M4|
-    (eq. 3.17, M1 with its z-component T0), as the listing sums them.
+    Bearing force = |R1 + R2 + R3 + R4| (eq. 3.16).  Bearing torque: as the listing sums it
+    |M1 + M2 + M3 + M4| (eq. 3.17, M1 with its z-component, the input torque T0); without
+    ``bearing_torque_with_input_torque`` (D132) |(M1 - T0) + M2 + M3 + M4|, the bearing
+    moment of eq. (4.1) that section 5.3 names for Table 5.6 (T0 is Table 5.7's).
     """
     weigh = lambda v: np.einsum("k,nkc->nc", x, v)                         # noqa: E731
     reaction_sum = sum(weigh(r) for r in _without_r4z(loads.reactions, quirks))
     moment_sum = sum(weigh(m) for m in loads.moments)
-    moment_sum[:, 2] += loads.input_torque @ x
+    if quirks.bearing_torque_with_input_torque:
+        moment_sum[:, 2] += loads.input_torque @ x
     return {"5_3": np.linalg.norm(weigh(loads.shaking_force), axis=1),
             "5_4": np.linalg.norm(weigh(loads.shaking_moment), axis=1),
             "5_5": np.linalg.norm(reaction_sum, axis=1),

@@ -36,6 +36,9 @@ class CsspQuirks(QuirkSwitches):
     shaking_in_link_frames: bool = True        # D076 [listing] shaking force and moment sum components of different frames
     moments_about_origin: bool = True          # D077 [listing] the reaction equations take inertia moments about O
     inverse_without_pivoting: bool = True      # D084 [listing] INVERSE: Gauss-Jordan, no pivoting
+    qp_cg_masses_free: bool = True             # D130 [both] the QP fixes x1+x2+x3, x5+x6+x7 only: x4, x8 fall, the links lose mass
+    qp_data_rounded: bool = True               # D131 [both] DATA b typed to 4 digits: x9 = 0.01553 for M3, bounds, sums
+    bearing_torque_with_input_torque: bool = True  # D132 [both] Table 5.6 = |M1 + M4| with T0; eq. (4.1) has M1 - T0
 
 
 CSSP_PRINTED = CsspQuirks()

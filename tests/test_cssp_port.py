@@ -130,12 +130,15 @@ def test_corrected_table_5_1_from_equations_2_8_to_2_13(corrected):
         m = x[4 * link:4 * link + 3]
         expected = [m[1] * ys ** 2 + m[2] * zs ** 2, m[0] * xs ** 2 + m[2] * zs ** 2, m[0] * xs ** 2 + m[1] * ys ** 2]
         np.testing.assert_allclose(corrected["inertia"][3 * link:3 * link + 3, 1], expected, rtol=1e-12)
-    # the constraints of eq. (4.5) as the listing states them (DATA b): active sums kept to the
-    # QP's conditioning (eps * cond(H + DIAG*I), about 6e-8), bounds held
+    # the constraints of eq. (4.5) with the links' masses kept (D130) and computed, not the
+    # DATA b's rounded literals (D131): active sums, centre masses and x9 kept to the QP's
+    # conditioning (eps * cond(H + DIAG*I), about 6e-8, of the largest mass), bounds (1 - w') m held
+    m = Constants.of(CsspInputs(), False).point_masses
     shifted = corrected["hessian"] + corrected["diag"] * np.eye(9)
     rtol = np.finfo(float).eps * np.linalg.cond(shifted)
-    np.testing.assert_allclose([x[:3].sum(), x[4:7].sum(), x[8]], [0.003688, 0.01475, 0.01553], rtol=rtol)
-    assert np.all(x[:8] >= np.array([0.001168] * 4 + [0.00467] * 4) * (1 - 1e-10))
+    np.testing.assert_allclose([x[:3].sum(), x[3], x[4:7].sum(), x[7], x[8]],
+                               [m[:3].sum(), m[3], m[4:7].sum(), m[7], m[8]], rtol=0, atol=rtol * m.max())
+    assert np.all(x[:8] >= 0.95 * m[:8] * (1 - 1e-10))
 
 
 def _positions(deg):
