@@ -62,7 +62,7 @@ def _parser() -> tuple[_Parser, dict[str, _Parser]]:
     parser = _Parser(prog=PROG, description=(
         "Rebuild, port and diff the FORTRAN of three mechanism-dynamics theses."),
         epilog="Exit status: 0 done, 1 a run failed, 2 a usage error, 130 interrupted.")
-    sub = parser.add_subparsers(dest="command", required=True, metavar="{reproduce,scenes,bench}")
+    sub = parser.add_subparsers(dest="command", required=True, metavar="{reproduce,scenes,bench,arithmetic}")
     rep = sub.add_parser("reproduce", help="run every engine of the scenes and write the report")
     rep.add_argument("scenes", nargs="*", help="scene names (default: all; see `linkrepro scenes`)")
     rep.add_argument("--out", default=Path("out"), type=_out_folder,
@@ -79,7 +79,13 @@ def _parser() -> tuple[_Parser, dict[str, _Parser]]:
     bench.add_argument("--quick", action="store_true",
                        help="a reduced configuration (the tables' 19 angles, three settings a knob, no Case III "
                             "sweep): a smoke test of a few seconds")
-    return parser, {"reproduce": rep, "scenes": scenes, "bench": bench}
+    arith = sub.add_parser("arithmetic", help="rebuild the Rahman (1996) FORTRAN under the arithmetics of "
+                           "1996 machines (needs gfortran; about 20 s of CPU): which printed digits survive "
+                           "a change of compiler")
+    arith.add_argument("--out", default=Path("out/arithmetic"), type=_out_folder,
+                       help="output folder for arithmetic.md, arithmetic.csv, arithmetic_cells.csv "
+                            "(default: out/arithmetic/, which reproduce's report links)")
+    return parser, {"reproduce": rep, "scenes": scenes, "bench": bench, "arithmetic": arith}
 
 
 def _scene_titles() -> dict[str, str]:
@@ -146,28 +152,47 @@ def _reproduce(args: argparse.Namespace, parser: _Parser) -> int:
     return 0
 
 
-def _bench(args: argparse.Namespace) -> int:
-    """``linkrepro bench``: --out checked writable before the run (status 2), a failed write
-    after it status 1; the markdown printed."""
-    from .bench import OUTPUTS, run_bench
+def _write_outputs(out: Path, outputs, writer: str, job, failures: tuple = ()) -> int:
+    """A command that writes ``outputs`` into ``out``: the folder checked writable before the
+    work (status 2); a failure in ``failures`` or a failed write after it, status 1; the
+    markdown ``job()`` returns printed."""
     from .run import OutputFolderError, check_output_folder
     try:
-        check_output_folder(args.out, [])
-        for name in OUTPUTS:
-            if (args.out / name).is_dir():
-                raise OutputFolderError(f"{args.out / name} is a folder; the bench writes a file there")
+        check_output_folder(out, [])
+        for name in outputs:
+            if (out / name).is_dir():
+                raise OutputFolderError(f"{out / name} is a folder; {writer} writes a file there")
     except OutputFolderError as exc:
         _error(f"{exc} (--out)")
         return 2
     try:
-        text = run_bench(args.repeat, args.out, quick=args.quick)
+        text = job()
+    except failures as exc:
+        _error(str(exc))
+        return 1
     except OSError as exc:
-        if not _under(exc, args.out):
+        if not _under(exc, out):
             raise
         _error(f"could not write {exc.filename}: {exc.strerror or exc}")
         return 1
     _out(text)
     return 0
+
+
+def _bench(args: argparse.Namespace) -> int:
+    """``linkrepro bench``: --out checked writable before the run (status 2), a failed write
+    after it status 1; the markdown printed."""
+    from .bench import OUTPUTS, run_bench
+    return _write_outputs(args.out, OUTPUTS, "the bench", lambda: run_bench(args.repeat, args.out, quick=args.quick))
+
+
+def _arithmetic(args: argparse.Namespace) -> int:
+    """``linkrepro arithmetic``: --out checked first (status 2); no gfortran or a reference build
+    that fails, status 1; the markdown printed."""
+    from .arithmetic import OUTPUTS, ReferenceFailed, write
+    from .readings import CompilerError
+    return _write_outputs(args.out, OUTPUTS, "the measurement", lambda: write(args.out)[3],
+                          (CompilerError, ReferenceFailed))
 
 
 def _main(argv: list[str] | None) -> int:
@@ -180,6 +205,8 @@ def _main(argv: list[str] | None) -> int:
         return _reproduce(args, commands["reproduce"])
     if args.command == "bench":
         return _bench(args)
+    if args.command == "arithmetic":
+        return _arithmetic(args)
     raise AssertionError(f"command {args.command!r} has no branch")
 
 

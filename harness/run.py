@@ -12,7 +12,7 @@ from queue import Empty
 
 import pandas as pd
 
-from . import appendix, case3_convergence, cognate_search, identities, progress, rahman1991, rahman1996_figures, readings, register as register_mod
+from . import appendix, arithmetic, case3_convergence, cognate_search, identities, progress, rahman1991, rahman1996_figures, readings, register as register_mod
 from .csv_output import write_csv
 from .diff import diff_scene, summary
 from .engines import ENGINES, PrintedProgramError
@@ -284,6 +284,7 @@ def reproduce(names: list[str] | None, out_dir: Path, measure_readings: bool = T
                   "| engine | " + " | ".join(verdicts.columns) + " |", "|---|" + "---|" * len(verdicts.columns)]
         lines += [f"| {engine} | " + " | ".join(str(v) for v in row) + " |" for engine, row in verdicts.iterrows()]
         lines.append("")
+    lines += arithmetic.report_link(out_dir)          # written by `linkrepro arithmetic`, when there
     if failures:
         lines += ["## Failures", "", *[f"- **{failure}**" for failure in failures], ""]
     lines.append(f"Total wall time of this reproduce run: {total:.2f} s.")

@@ -1,0 +1,166 @@
+"""harness/arithmetic.py: the legacy FORTRAN rebuilt under other arithmetics (register D056)."""
+import re
+import shutil
+from dataclasses import replace
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from linkrepro.harness import arithmetic as A
+from linkrepro.harness.readings import CompilerError
+
+needs_gfortran = pytest.mark.skipif(shutil.which("gfortran") is None, reason="needs gfortran")
+
+#: the reference flags spelled differently: reordered, and x86-64's defaults written out
+RESPELLED = A.Variant("respelled", "control: the reference, spelled differently", True,
+                      flags_base=("-O1", "-fallow-argument-mismatch", "-fno-fast-math", "-ffp-contract=off",
+                                  "-fno-automatic", "-std=legacy", "-fno-unsafe-math-optimizations"))
+BROKEN = A.Variant("broken", "control: a flag gfortran does not know", True, ("-fno-such-arithmetic",))
+
+
+@pytest.fixture(scope="module")
+def measured():
+    if shutil.which("gfortran") is None:
+        pytest.skip("needs gfortran")
+    m = A.measure([A.get("reference"), RESPELLED, A.get("context-constants"), A.get("x87"), BROKEN])
+    cells = A.cell_frame(m)
+    return m, cells, A.count_frame(m, cells)
+
+
+def test_reference_flags_are_the_legacy_builds(root):
+    """The reference variant is built as meson.build builds the legacy engine."""
+    text = (root / "meson.build").read_text()
+    block = re.search(r"fortran_legacy_args\s*=\s*\[(.*?)\]", text, re.S).group(1)
+    assert tuple(re.findall(r"'([^']*)'", block)) == A.REFERENCE_FLAGS
+
+
+@needs_gfortran
+def test_reference_is_the_legacy_engine_bit_for_bit(measured):
+    from linkrepro.harness.scenes_rahman1996 import legacy_tables
+    m, _, _ = measured
+    for table, frame in legacy_tables().items():
+        for col in ("before", "after"):
+            assert np.array_equal(m.values["reference"][table][col].to_numpy(), frame[col].to_numpy()), (table, col)
+
+
+@needs_gfortran
+def test_reference_counts_are_the_harness_diff(measured, register):
+    """Cells at the printed digit under the reference = the harness's `match` cells of legacy."""
+    from linkrepro.harness.diff import diff_scene
+    from linkrepro.harness.published_tables import PublishedTable
+    from linkrepro.harness.scenes_rahman1996 import RAHMAN1996_SCENES
+    _, _, counts = measured
+    ref = counts[counts["variant"] == "reference"].set_index("table")
+    total = 0
+    for scene in RAHMAN1996_SCENES:
+        diff = diff_scene(scene, PublishedTable.load(scene.table), {"legacy": scene.run("legacy")}, register)
+        table = scene.table.removeprefix("rahman1996_table").replace("_", ".")
+        assert ref.at[table, "at_printed_digit"] == int((diff["status"] == "match").sum()), table
+        assert ref.at[table, "cells"] == len(diff)
+        total += len(diff)
+    assert ref.at["all", "cells"] == total == 456
+
+
+@needs_gfortran
+def test_a_variant_that_changes_nothing_gives_the_identical_matrix(measured):
+    m, cells, counts = measured
+    assert np.array_equal(cells["value:respelled"].to_numpy(), cells["value:reference"].to_numpy())
+    a = counts[counts["variant"] == "reference"].drop(columns="variant").reset_index(drop=True)
+    b = counts[counts["variant"] == "respelled"].drop(columns="variant").reset_index(drop=True)
+    pd.testing.assert_frame_equal(a, b)
+    assert (b["cells_changed"] == 0).all()
+
+
+@needs_gfortran
+def test_the_variants_do_change_the_arithmetic(measured):
+    """x87 moves cells without changing the printed-digit counts; the constants in double move
+    the 'before' columns of Tables 5.4-5.7 to the printed digit (the D056 finding)."""
+    _, cells, counts = measured
+    c = counts.set_index(["variant", "table"])
+    assert c.at[("x87", "all"), "cells_changed"] > 100
+    assert c.at[("x87", "all"), "max_rel_change"] < 1e-7
+    for table in ("5.4", "5.5", "5.6", "5.7"):
+        gain = c.at[("context-constants", table), "at_printed_digit"] - c.at[("reference", table), "at_printed_digit"]
+        assert gain > 20, table
+    assert set(cells["sensitivity"]) <= {"always", "never", "compiler-sensitive"}
+    assert (cells.loc[cells["distinct_values"] == 1, "same_printed_digits"]).all()
+
+
+@needs_gfortran
+def test_a_variant_that_cannot_build_is_reported_not_fatal(measured):
+    m, cells, _ = measured
+    assert "broken" in m.failures and "does not build" in m.failures["broken"]
+    assert "value:broken" not in cells.columns
+
+
+def test_a_missing_compiler_is_a_typed_error(monkeypatch, tmp_path):
+    monkeypatch.setattr(A, "COMPILER", "gfortran-that-is-not-there")
+    with pytest.raises(CompilerError, match="not on PATH"):
+        A.measure()
+    from linkrepro.harness.cli import main
+    assert main(["arithmetic", "--out", str(tmp_path / "a")]) == 1
+    assert not (tmp_path / "a" / "arithmetic.csv").exists()
+
+
+def test_a_reference_that_fails_is_a_typed_error(monkeypatch):
+    if shutil.which("gfortran") is None:
+        pytest.skip("needs gfortran")
+    with pytest.raises(A.ReferenceFailed, match="broken"):
+        A.measure([BROKEN])
+
+
+def _sources():
+    return {name.split("/")[-1]: (A.LEGACY_DIR / name).read_text() for name in A.SRC}
+
+
+def test_long_constants_touch_only_the_eight_digit_literals():
+    before, after = _sources(), A.long_constants_double(_sources())
+    changed = [(a, b) for a, b in zip(before[A.MAIN].split("\n"), after[A.MAIN].split("\n")) if a != b]
+    assert {re.search(r"=(\S+)", b).group(1) for _, b in changed} == {"1.1636867D0", "2.3139072D0", "4.6210569D0"}
+    assert after["rahman1996_subroutines.f"] == before["rahman1996_subroutines.f"]
+
+
+def test_promotion_reads_fortran_not_text():
+    text = ("      X=F(K1X)+0.1*Y\n"
+            "    1 FORMAT(3F20.5)\n"
+            "      IF (A.GT.0.3 .AND. I.EQ.1) Z=1.5E-3\n"
+            "C     K=0.7 in a comment\n"
+            "      WRITE(6,*) 'text 0.5'\n")
+    out = A._promote(text, lambda m, e, s: False).split("\n")
+    assert out[0] == "      X=F(K1X)+0.1D0*Y"
+    assert out[1] == "    1 FORMAT(3F20.5)"
+    assert out[2] == "      IF (A.GT.0.3D0 .AND. I.EQ.1) Z=1.5D-3"
+    assert out[3:5] == ["C     K=0.7 in a comment", "      WRITE(6,*) 'text 0.5'"]
+
+
+def test_a_transform_whose_text_is_gone_says_so():
+    files = _sources()
+    files[A.MAIN] = files[A.MAIN].replace("      M1=1.9/G\n", "      M1=1.90/G\n")
+    with pytest.raises(ValueError, match="M1=1.9/G"):
+        A.selected_real8(files)
+
+
+def test_the_criterion_needs_every_table_and_documentation():
+    def counts(gains, documented=True):
+        rows = [{"variant": "v", "table": t, "gain": g, "documented": documented}
+                for t, g in zip(["5.1", "5.2", "5.3", "5.4", "5.5", "5.6", "5.7"], gains)]
+        return pd.DataFrame(rows)
+    assert A.meets_criterion(counts([0, 1, 1, 1, 1, 1, 1])) == {"v": True}
+    assert A.meets_criterion(counts([0, 1, 0, 40, 30, 30, 60])) == {"v": False}      # one table not raised
+    assert A.meets_criterion(counts([-1, 1, 1, 1, 1, 1, 1])) == {"v": False}         # Table 5.1 lowered
+    assert A.meets_criterion(counts([0, 1, 1, 1, 1, 1, 1], documented=False)) == {"v": False}
+
+
+def test_every_variant_is_named_once_and_says_what_it_stands_for():
+    names = [v.name for v in A.VARIANTS]
+    assert names[0] == "reference" and len(names) == len(set(names))
+    assert all(v.machine for v in A.VARIANTS)
+    assert replace(A.get("O2"), extra=()).flags == A.REFERENCE_FLAGS
+
+
+def test_reproduce_links_the_measurement_only_when_it_is_there(tmp_path):
+    assert A.report_link(tmp_path) == []
+    (tmp_path / "arithmetic").mkdir()
+    (tmp_path / "arithmetic" / "arithmetic.md").write_text("# x\n")
+    assert "(arithmetic/arithmetic.md)" in A.report_link(tmp_path)[0]
