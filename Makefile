@@ -8,6 +8,7 @@ SOURCES := pyproject.toml meson.build $(shell find legacy port harness pkgroot -
 .PHONY: reproduce test bench fuzz setup clean
 
 reproduce: $(VENV)/.installed
+	$(BIN)/linkrepro arithmetic --out out/arithmetic > /dev/null
 	$(BIN)/linkrepro reproduce --out out
 
 test: $(VENV)/.installed

@@ -593,7 +593,10 @@ def meets_criterion(counts: pd.DataFrame) -> dict[str, bool]:
 def report_link(out_dir: Path) -> list[str]:
     """Lines for reproduce's report.md when ``linkrepro arithmetic`` has written DIR/arithmetic/."""
     if not (Path(out_dir) / "arithmetic" / "arithmetic.md").is_file():
-        return []
+        return ["## Which digits survive a change of arithmetic", "",
+                f"Not measured in this run: `linkrepro arithmetic --out {Path(out_dir) / 'arithmetic'}` rebuilds "
+                "Rahman (1996) Tables 5.1-5.7 under the arithmetics of 1996 machines (about 20 s of CPU; "
+                "`make reproduce` runs it) and this report then links its matrix (register D056).", ""]
     return ["## [Which digits survive a change of arithmetic](arithmetic/arithmetic.md)", "",
             "Rahman (1996) Tables 5.1-5.7 rebuilt under the arithmetics of 1996 machines, per variant "
             "and per cell (written by `linkrepro arithmetic`; register D056).", ""]

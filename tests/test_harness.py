@@ -46,6 +46,8 @@ def test_register_cell_claims_are_real_deviations(scene, published, results, reg
     pub, half = published.values, published.half_unit
     for entry in register.values():
         for claim in entry.cells:
+            if claim.scene != scene.name:      # e.g. section 5.3's quoted numbers (engine 'published')
+                continue
             for engine in claim.engines:
                 frame = results[engine]
                 for i, deg in enumerate(pub["input_deg"]):

@@ -66,3 +66,9 @@ def test_every_section_5_3_number_the_tables_do_not_give_is_registered():
     bad = checks[checks["verdict"] == "differs"]
     assert len(bad), "the check found nothing: section 5.3 quotes three extremes no table row gives (D058)"
     assert (bad["register_ids"] != "").all(), bad[bad["register_ids"] == ""]
+
+
+def test_no_register_claim_on_section_5_3_names_a_consistent_number():
+    checks = identities.percentage_checks(register.load())
+    consistent = checks[checks["verdict"] == "consistent"]
+    assert (consistent["register_ids"] == "").all(), consistent[consistent["register_ids"] != ""]
