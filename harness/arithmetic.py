@@ -395,21 +395,16 @@ def _first_error(stderr: str) -> str:
     return next((line for line in lines if "error" in line.lower()), lines[-1] if lines else "no message")
 
 
-def build_and_run(variant: Variant, workdir: Path) -> str:
-    """Build one variant in ``workdir`` and return its standard output.
-    ``VariantFailed`` if it does not build or run; ``CompilerError`` if gfortran cannot run."""
-    workdir.mkdir(parents=True, exist_ok=True)
+def _transformed(variant: Variant) -> dict[str, str]:
     try:
-        files = _files(variant)
+        return _files(variant)
     except ValueError as exc:
         raise VariantFailed(f"source transform: {exc}") from exc
-    order = ["driver.f", MAIN] + [n for n in files if n not in ("driver.f", MAIN)]
-    names = [n for n in order if n in files]
-    for name in names:
-        (workdir / name).write_text(files[name])
-    exe = workdir / "cssp"
+
+
+def _gfortran(flags: tuple[str, ...], args: list[str], workdir: Path) -> None:
     try:
-        subprocess.run([COMPILER, *variant.flags, "-o", str(exe), *names], cwd=workdir, check=True,
+        subprocess.run([COMPILER, *flags, *args], cwd=workdir, check=True,
                        capture_output=True, text=True, timeout=COMPILE_TIMEOUT_S)
     except subprocess.CalledProcessError as exc:
         raise VariantFailed(f"does not build: {_first_error(exc.stderr)}") from exc
@@ -417,6 +412,35 @@ def build_and_run(variant: Variant, workdir: Path) -> str:
         raise VariantFailed(f"{COMPILER} did not finish in {COMPILE_TIMEOUT_S} s") from exc
     except OSError as exc:
         raise CompilerError(f"{COMPILER} could not be run: {exc.strerror or exc}") from exc
+
+
+def prebuild(variant: Variant, names: tuple[str, ...], workdir: Path) -> dict[str, tuple[str, Path, tuple]]:
+    """These files of a variant compiled once to object files with its flags: for
+    ``build_and_run``'s ``prebuilt`` (name: (text, object, flags)).  ``VariantFailed`` if not."""
+    workdir.mkdir(parents=True, exist_ok=True)
+    files = _transformed(variant)
+    for name in names:
+        (workdir / name).write_text(files[name])
+    _gfortran(variant.flags, ["-c", *names], workdir)
+    return {name: (files[name], workdir / (Path(name).stem + ".o"), variant.flags) for name in names}
+
+
+def build_and_run(variant: Variant, workdir: Path, prebuilt: dict[str, tuple[str, Path, tuple]] | None = None) -> str:
+    """Build one variant in ``workdir`` and return its standard output.  A file whose text
+    and flags are those of a ``prebuilt`` object (``prebuild``) is linked from it, not compiled.
+    ``VariantFailed`` if it does not build or run; ``CompilerError`` if gfortran cannot run."""
+    workdir.mkdir(parents=True, exist_ok=True)
+    files = _transformed(variant)
+    order = ["driver.f", MAIN] + [n for n in files if n not in ("driver.f", MAIN)]
+    names = [n for n in order if n in files]
+    linked = {n: obj for n, (text, obj, flags) in (prebuilt or {}).items()
+              if files.get(n) == text and flags == variant.flags}
+    for name in names:
+        if name not in linked:
+            (workdir / name).write_text(files[name])
+    exe = workdir / "cssp"
+    _gfortran(variant.flags, ["-o", str(exe), *[n for n in names if n not in linked],
+                              *[str(linked[n]) for n in names if n in linked]], workdir)
     try:
         done = subprocess.run([str(exe)], cwd=workdir, capture_output=True, text=True, timeout=RUN_TIMEOUT_S)
     except subprocess.TimeoutExpired as exc:
@@ -469,17 +493,25 @@ class Measurement:
         return [v for v in self.variants if v.name in self.values]
 
 
-def measure(variants: tuple[Variant, ...] | list[Variant] = VARIANTS, workers: int | None = None) -> Measurement:
+def measure(variants: tuple[Variant, ...] | list[Variant] = VARIANTS, workers: int | None = None,
+            shared: tuple[str, ...] = ()) -> Measurement:
     """Build and run every variant (side by side on the cores); the first must run
-    (``ReferenceFailed`` if not), the others are reported when they fail."""
+    (``ReferenceFailed`` if not), the others are reported when they fail.  ``shared``: files
+    (e.g. "driver.f") compiled once from the first variant and linked into every variant
+    with the same text of them and the same flags (variants that differ in one file)."""
     require_compiler()
     variants = list(variants)
     start = time.perf_counter()
     workers = max(1, min(len(variants), workers or os.cpu_count() or 1))
     with tempfile.TemporaryDirectory(prefix="linkrepro-arith-") as tmp:
+        try:
+            prebuilt = prebuild(variants[0], shared, Path(tmp) / ".shared") if shared else None
+        except VariantFailed as exc:
+            raise ReferenceFailed(f"the {variants[0].name} build failed: {exc}") from exc
+
         def one(variant: Variant):
             try:
-                return variant.name, tables_of(parse(build_and_run(variant, Path(tmp) / variant.name)))
+                return variant.name, tables_of(parse(build_and_run(variant, Path(tmp) / variant.name, prebuilt)))
             except VariantFailed as exc:
                 return variant.name, str(exc)
         with ThreadPoolExecutor(workers) as pool:

@@ -68,7 +68,7 @@ def _parser() -> tuple[_Parser, dict[str, _Parser]]:
     rep.add_argument("--out", default=Path("out"), type=_out_folder,
                      help="output folder (default: out/); checked writable before the run starts")
     rep.add_argument("--skip-readings", action="store_true",
-                     help="do not measure the OCR readings (they rebuild printed listings with gfortran)")
+                     help="do not measure the OCR readings (they rebuild the listings with gfortran)")
     scenes = sub.add_parser("scenes", help="list the scenes")
     bench = sub.add_parser("bench", help="time each engine against its error: cost per position against "
                            "legacy and a flop-count limit, and speed against error for each knob")

@@ -6,6 +6,12 @@ like the printed engine, run, and its deflection columns compared with the
 published table.  This is the measured evidence behind each uncertain reading.
 A listing that cannot print its result as printed (the Case II cognate, D037) is
 measured on its src program with a driver (``DRIVERS``).
+The 1996 program (Rahman, CSSP: ``CSSP_FILES``) is measured on legacy/src: its printed main
+program WRITEs none of Tables 5.2-5.7, so each reading is put back in the src copy, built and run
+by harness/arithmetic.py's driver with the legacy engine's flags (one gfortran build per reading,
+shared by the six table scenes), and the cells of Tables 5.2-5.7 within 1e-6 relative are counted.
+Items of one entry that share a ``group`` are put back together (one row each group); an entry's
+items without a ``group`` are put back together (one row per entry).
 Needs gfortran on PATH: without it (or when it cannot build the listing as printed)
 ``measure`` raises ``CompilerError``; ``linkrepro reproduce`` checks for it before
 the run starts (``require_compiler``) and skips the measurement only when asked to
@@ -18,6 +24,7 @@ import shutil
 import subprocess
 import tempfile
 import tomllib
+from functools import lru_cache
 from pathlib import Path
 
 import numpy as np
@@ -65,6 +72,15 @@ DRIVERS = {"ali1977_case2_cognate.f": """\
   200 FORMAT(1H0,5X,F12.6,8X,F12.6,8X,F12.6,8X,F12.6)
       END
 """}
+#: The 1996 program is measured on legacy/src (the printed main program WRITEs no table but
+#: Table 5.1's crank I_xx): a reading's ``chosen`` is an exact line of legacy/src/<file>.
+CSSP_FILES = ("rahman1996_cssp_main.f", "rahman1996_subroutines.f")
+#: the published tables its readings are counted on (Table 5.1 is not a series: arithmetic.SERIES)
+CSSP_TABLES = tuple(f"rahman1996_table5_{k}" for k in range(2, 8))
+#: D116's and D117's criterion: within 1e-6 relative (D056's REAL*4 floor; arithmetic.count_frame's
+#: ``within_1e-6``), crank 0-350 deg (the published row 360 is a copy of row 0, D061)
+CSSP_REL = 1e-6
+CSSP_LAST_ROW = "350"
 COMPILER = "gfortran"
 COMPILE_TIMEOUT_S = 120
 
@@ -78,14 +94,27 @@ def _entries() -> list[dict]:
         return tomllib.load(fh).get("deviation", [])
 
 
-def _table_of(entry: dict) -> str | None:
+def _tables_of(entry: dict) -> tuple[str, ...]:
     readings = entry.get("reading", [])
-    return COLUMNS.get(readings[0]["file"], (None,))[0] if readings else None
+    if not readings:
+        return ()
+    if readings[0]["file"] in CSSP_FILES:
+        return CSSP_TABLES
+    return (COLUMNS[readings[0]["file"]][0],) if readings[0]["file"] in COLUMNS else ()
+
+
+def _groups(entry: dict) -> list[tuple[str, list[dict]]]:
+    """An entry's readings as (group, items), in register order: items sharing a ``group``
+    are put back together; without one, all of the entry's items are one group ("")."""
+    groups: dict[str, list[dict]] = {}
+    for item in entry.get("reading", []):
+        groups.setdefault(str(item.get("group", "")), []).append(item)
+    return list(groups.items())
 
 
 def has_readings(table: str) -> bool:
     """Whether the register has reading alternatives measured against this published table."""
-    return any(_table_of(entry) == table for entry in _entries())
+    return any(table in _tables_of(entry) for entry in _entries())
 
 
 def require_compiler(scenes: dict[str, str]) -> None:
@@ -126,14 +155,20 @@ def _printed_dir() -> Path | None:
     return PRINTED_DIR if PRINTED_DIR.is_dir() else None
 
 
-def _run_variant(program: str, edits: list[dict], workdir: Path) -> pd.DataFrame:
-    text = ((SRC_DIR if program in DRIVERS else PRINTED_DIR) / program).read_text()
+def _put_back(text: str, program: str, edits: list[dict]) -> str:
+    """``text`` with each edit's ``chosen`` line (its ``occurrence``-th, a whole line) replaced by
+    its ``scan`` text; ``ValueError`` if a chosen line is not there."""
     for edit in edits:
         chosen, scan, nth = edit["chosen"], edit["scan"], int(edit.get("occurrence", 1))
         parts = text.split(chosen + "\n")
         if len(parts) <= nth:
             raise ValueError(f"{program}: chosen text {chosen!r} occurs fewer than {nth} times")
         text = (chosen + "\n").join(parts[:nth]) + scan + "\n" + (chosen + "\n").join(parts[nth:])
+    return text
+
+
+def _run_variant(program: str, edits: list[dict], workdir: Path) -> pd.DataFrame:
+    text = _put_back(((SRC_DIR if program in DRIVERS else PRINTED_DIR) / program).read_text(), program, edits)
     src = workdir / program
     src.write_text(text)
     exe = workdir / "variant"
@@ -161,8 +196,11 @@ def _matched(frame: pd.DataFrame, program: str, published: PublishedTable) -> tu
 
 
 def measure(table: str = "ali1977_table1") -> pd.DataFrame:
-    """One row per reading: cells matched with the chosen text and with the scan's."""
-    entries = [entry for entry in _entries() if _table_of(entry) == table]
+    """One row per reading (an entry, or a group of its items): cells matched with the chosen
+    text and with the scan's.  A 1996 table (``CSSP_TABLES``): see ``measure_cssp``."""
+    if table in CSSP_TABLES:
+        return measure_cssp(table)
+    entries = [entry for entry in _entries() if table in _tables_of(entry)]
     if not entries or _printed_dir() is None:
         return pd.DataFrame()
     if shutil.which(COMPILER) is None:
@@ -173,29 +211,125 @@ def measure(table: str = "ali1977_table1") -> pd.DataFrame:
         tmp = Path(tmp)
         baselines = {}
         for entry in entries:
-            readings = entry["reading"]
-            program = readings[0]["file"]
-            if program not in baselines:
+            for group, readings in _groups(entry):
+                program = readings[0]["file"]
+                if program not in baselines:
+                    try:
+                        baselines[program] = _matched(_run_variant(program, [], tmp), program, published)
+                    except subprocess.CalledProcessError as exc:   # the listing as printed builds with meson
+                        raise CompilerError(f"{COMPILER} could not build the printed listing {program} as printed "
+                                            f"({_first_error(exc.stderr)}); check the {COMPILER} installation") from exc
                 try:
-                    baselines[program] = _matched(_run_variant(program, [], tmp), program, published)
-                except subprocess.CalledProcessError as exc:   # the listing as printed builds with meson
-                    raise CompilerError(f"{COMPILER} could not build the printed listing {program} as printed "
-                                        f"({_first_error(exc.stderr)}); check the {COMPILER} installation") from exc
-            try:
-                scan = _matched(_run_variant(program, readings, tmp), program, published)
-            except (subprocess.CalledProcessError, subprocess.TimeoutExpired):
-                scan = (0, baselines[program][1], float("nan"))   # the scan's text does not build or run
-            chosen = baselines[program]
-            rows.append({"id": entry["id"], "program": program,
-                         "chosen_matched": f"{chosen[0]}/{chosen[1]}", "chosen_max_err": chosen[2],
-                         "scan_matched": f"{scan[0]}/{scan[1]}", "scan_max_err": scan[2]})
+                    scan = _matched(_run_variant(program, readings, tmp), program, published)
+                except (subprocess.CalledProcessError, subprocess.TimeoutExpired):
+                    scan = (0, baselines[program][1], float("nan"))   # the scan's text does not build or run
+                chosen = baselines[program]
+                rows.append({"id": entry["id"] + (f" ({group})" if group else ""), "program": program,
+                             "chosen_matched": f"{chosen[0]}/{chosen[1]}", "chosen_max_err": chosen[2],
+                             "scan_matched": f"{scan[0]}/{scan[1]}", "scan_max_err": scan[2]})
     return pd.DataFrame(rows)
+
+
+# ---------------------------------------------------------------- the 1996 program (legacy/src)
+
+def _cssp_sources() -> bool:
+    """legacy/src's CSSP sources (and what arithmetic.py's build needs) are at hand."""
+    from .arithmetic import LEGACY_DIR, PRINTED, SRC
+    return all((LEGACY_DIR / path).is_file() for path in SRC + PRINTED)
+
+
+def _cssp_readings() -> tuple[tuple[str, str, tuple[tuple[str, str, str, int], ...]], ...]:
+    """The register's 1996 readings as (entry id, group, ((file, chosen, scan, occurrence), ...))."""
+    out = []
+    for entry in _entries():
+        if _tables_of(entry) != CSSP_TABLES:
+            continue
+        for group, items in _groups(entry):
+            other = [item["file"] for item in items if item["file"] not in CSSP_FILES]
+            if other:
+                raise ValueError(f"{entry['id']}: reading of {other[0]} grouped with the 1996 program's")
+            out.append((entry["id"], group, tuple((item["file"], item["chosen"], item["scan"],
+                                                   int(item.get("occurrence", 1))) for item in items)))
+    return tuple(out)
+
+
+@lru_cache(maxsize=4)
+def cssp_counts(readings: tuple) -> tuple[pd.DataFrame, dict[str, str], float]:
+    """Build and run legacy/src as it is ("chosen") and once per reading with its scan text put
+    back (as ``_cssp_readings`` gives them; the builds side by side on the cores), by
+    arithmetic.py's driver and reference flags.  Returns (counts, failures, seconds): counts one
+    row per build, table (5.2-5.7) and column with the cells of crank 0-350 within ``CSSP_REL``
+    of the published value and the largest change from the chosen build (relative); failures
+    the builds that did not build or run (name: why).  Cached: the six scenes share one call.
+    ``ValueError`` if a chosen line is not in legacy/src; ``CompilerError`` if the chosen build fails."""
+    from . import arithmetic
+    texts = {name: (SRC_DIR / name).read_text() for name in CSSP_FILES}
+    variants = [arithmetic.Variant("chosen", "legacy/src as it is: the readings as chosen", False)]
+    for k, (entry, group, items) in enumerate(readings):
+        edited = dict(texts)
+        for file, chosen, scan, nth in items:
+            edited[file] = _put_back(edited[file], file, [{"chosen": chosen, "scan": scan, "occurrence": nth}])
+
+        def put_back(files: dict[str, str], edited=edited) -> dict[str, str]:
+            return {**files, **edited}
+        variants.append(arithmetic.Variant(f"reading{k}", f"{entry} {group}".strip(), False, transform=put_back))
+    try:                                            # what no reading edits is compiled once
+        m = arithmetic.measure(variants, shared=("driver.f", "imsl_qprog.f", "rahman1996_subroutines.f"))
+    except arithmetic.ReferenceFailed as exc:       # legacy/src as it is builds with meson
+        raise CompilerError(f"{COMPILER} could not build legacy/src's CSSP as it is ({exc}); "
+                            f"check the {COMPILER} installation") from exc
+    cells = arithmetic.cell_frame(m)
+    series = [t.removeprefix("rahman1996_table").replace("_", ".") for t in CSSP_TABLES]
+    rows = pd.to_numeric(cells["row"], errors="coerce")
+    cells = cells[cells["table"].isin(series) & (rows <= float(CSSP_LAST_ROW))]
+    parts = []
+    for column, part in cells.groupby("column", sort=False):
+        counts = arithmetic.count_frame(m, part)
+        counts = counts[counts["table"] != "all"].assign(column=column)
+        parts.append(counts[["variant", "table", "column", "cells", "within_1e-6", "max_rel_change"]])
+    return pd.concat(parts, ignore_index=True), dict(m.failures), m.seconds
+
+
+def measure_cssp(table: str = "rahman1996_table5_2") -> pd.DataFrame:
+    """One row per 1996 reading (entry and group): the cells of this table, crank 0-350 per
+    column, within 1e-6 relative with the chosen text (legacy/src as it is) and with the scan's
+    text put back; the largest relative change the scan's text makes in the table.  Empty
+    without register readings or the source tree's legacy/; ``CompilerError`` without gfortran."""
+    readings = _cssp_readings()
+    if not readings or _printed_dir() is None or not _cssp_sources():
+        return pd.DataFrame()
+    if shutil.which(COMPILER) is None:
+        raise CompilerError(_missing_message([table]))
+    counts, failures, seconds = cssp_counts(readings)
+    label = table.removeprefix("rahman1996_table").replace("_", ".")
+    part = counts[counts["table"] == label].set_index(["variant", "column"])
+
+    def matched(variant: str, column: str) -> str:
+        if variant in failures:
+            return failures[variant].split(":")[0]
+        return f"{part.at[(variant, column), 'within_1e-6']}/{part.at[(variant, column), 'cells']}"
+
+    rows = []
+    for k, (entry, group, items) in enumerate(readings):
+        name = f"reading{k}"
+        rows.append({"id": entry, "reading": group, "program": ", ".join(dict.fromkeys(i[0] for i in items)),
+                     "lines": len(items),
+                     "chosen_before": matched("chosen", "before"), "chosen_after": matched("chosen", "after"),
+                     "scan_before": matched(name, "before"), "scan_after": matched(name, "after"),
+                     "scan_max_rel_change": (float("nan") if name in failures
+                                             else float(part.loc[name, "max_rel_change"].max())),
+                     "why": failures.get(name, "")})
+    frame = pd.DataFrame(rows)
+    frame.attrs.update(table=table, builds=len(readings) + 1, seconds=seconds)
+    return frame
 
 
 def as_markdown(frame: pd.DataFrame) -> str:
     if frame.empty:
         return ("## Reading alternatives\n\nNot measured (needs gfortran on PATH and the source "
-                "tree's legacy/printed).")
+                "tree's legacy/printed and legacy/src).")
+    if "scan_before" in frame.columns:
+        return _cssp_markdown(frame)
     lines = ["## Reading alternatives (measured: the printed listing rebuilt with the scan's literal text)",
              "", "Deflection cells of rows 0-340 within half a unit of the printed digit.", "",
              "| entry | program | chosen reading | max err | scan's literal text | max err |",
@@ -203,4 +337,29 @@ def as_markdown(frame: pd.DataFrame) -> str:
     for r in frame.itertuples():
         lines.append(f"| {r.id} | {r.program} | {r.chosen_matched} | {r.chosen_max_err:.4f} | "
                      f"{r.scan_matched} | {r.scan_max_err:.4f} |")
+    return "\n".join(lines)
+
+
+def _cssp_markdown(frame: pd.DataFrame) -> str:
+    table = frame.attrs.get("table", "rahman1996_table5_2")
+    label = table.removeprefix("rahman1996_table").replace("_", ".")
+    rel = f"{CSSP_REL:.0e}".replace("e-0", "e-")
+    lines = ["## Reading alternatives (measured: legacy/src rebuilt with the scan's text put back)", "",
+             f"Cells of Table {label}, crank 0-{CSSP_LAST_ROW} deg per column (row 360 is a copy of row 0, "
+             f"D061), within {rel} relative of the published value (the criterion of D116 and D117, "
+             "D056's floor): legacy/src as it is (the chosen readings) and with each reading's lines put back "
+             "as the scan prints them (where that does not compile, as the other grouping the scan admits: see "
+             "the entry), built with the legacy engine's flags and run by harness/arithmetic.py's driver. "
+             f"{frame.attrs.get('builds', len(frame) + 1)} gfortran builds shared by the six table scenes, "
+             f"{frame.attrs.get('seconds', float('nan')):.1f} s. Re-measure: "
+             f"`python -c \"from linkrepro.harness import readings; print(readings.measure('{table}'))\"`.", "",
+             "| entry | reading | lines put back | chosen: before | chosen: after | scan's text: before | "
+             "scan's text: after | largest change (rel) |", "|---|---|---|---|---|---|---|---|"]
+    for r in frame.itertuples():
+        change = "-" if r.scan_max_rel_change != r.scan_max_rel_change else f"{r.scan_max_rel_change:.1e}"
+        lines.append(f"| {r.id} | {r.reading or '(all)'} | {r.lines} | {r.chosen_before} | {r.chosen_after} | "
+                     f"{r.scan_before} | {r.scan_after} | {change} |")
+    failed = frame[frame["why"] != ""]
+    if len(failed):
+        lines += [""] + [f"- {r.id} {r.reading}: {r.why}" for r in failed.itertuples()]
     return "\n".join(lines)
