@@ -267,15 +267,21 @@ _SELECTED = (("      PARAMETER (G=386.4,", "      REAL*8 G\n      PARAMETER (G=3
              ("      M3=6.0/G\n", "      M3=6.0D0/G\n"))
 
 
+def _replace_each_once(files: dict[str, str], pairs, where: str) -> dict[str, str]:
+    """``files`` with each (old, new) of ``pairs`` replaced in the main program, where ``old``
+    must occur exactly once (ValueError naming ``where`` otherwise)."""
+    text = files[MAIN]
+    for old, new in pairs:
+        if text.count(old) != 1:
+            raise ValueError(f"{where}: {old.strip()!r} occurs {text.count(old)} times, expected once")
+        text = text.replace(old, new)
+    return {**files, MAIN: text}
+
+
 def selected_real8(files: dict[str, str]) -> dict[str, str]:
     """G, PI and M1..M3 = W/G in REAL*8 with double constants (a what-if: the quantities
     the listing declares REAL*8 but computes from REAL*4 constants)."""
-    text = files[MAIN]
-    for old, new in _SELECTED:
-        if text.count(old) != 1:
-            raise ValueError(f"{MAIN}: {old.strip()!r} occurs {text.count(old)} times, expected once")
-        text = text.replace(old, new)
-    return {**files, MAIN: text}
+    return _replace_each_once(files, _SELECTED, MAIN)
 
 
 #: the printed main program's three I/O statements, made to WRITE every cell (as-printed)
@@ -290,12 +296,7 @@ _PRINTED_IO = (("      OPEN (6,FILE='dint.dat',STATUS='new')\n", "C     OPEN: TO
 
 def printed_output(files: dict[str, str]) -> dict[str, str]:
     """The listing as printed, its WRITEs widened to every cell in full precision."""
-    text = files[MAIN]
-    for old, new in _PRINTED_IO:
-        if text.count(old) != 1:
-            raise ValueError(f"printed {MAIN}: {old.strip()!r} occurs {text.count(old)} times, expected once")
-        text = text.replace(old, new)
-    return {**files, MAIN: text}
+    return _replace_each_once(files, _PRINTED_IO, f"printed {MAIN}")
 
 
 # ---------------------------------------------------------------- the variants

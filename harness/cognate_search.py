@@ -21,7 +21,6 @@ from __future__ import annotations
 
 import itertools
 import sys
-from types import SimpleNamespace
 
 import numpy as np
 import pandas as pd
@@ -181,13 +180,11 @@ def columns(case: str, flips=()) -> pd.DataFrame:
 def matched(case: str, frame: pd.DataFrame) -> tuple[int, float]:
     """(cells of the cognate columns within half a unit of the printed digit, worst error)."""
     published = PublishedTable.load(TABLES[case])
-    pub, half = published.values.set_index("input_deg"), published.half_unit.set_index(published.values["input_deg"])
+    rows = published.values["input_deg"].isin(DEG).to_numpy()
     count, worst = 0, 0.0
     for col in COLUMNS:
-        err = np.abs(frame[col].to_numpy() - pub.loc[DEG, col].to_numpy())
-        err = np.where(np.isnan(err), np.inf, err)
-        count += int((err <= half.loc[DEG, col].to_numpy() * (1 + 1e-9)).sum())
-        worst = max(worst, float(err.max()))
+        matched, err = published.matched(col, frame[col], rows)
+        count, worst = count + matched, max(worst, err)
     return count, worst
 
 

@@ -84,6 +84,12 @@ SECTION_5_3_SCENE = "rahman1996-figures"
 PERCENTAGE_COLUMNS = ["table", "quantity", "quoted", "from_table", "gap", "bound", "verdict", "register_ids"]
 
 
+def decrement_pct(table: pd.DataFrame) -> np.ndarray:
+    """The listing's percentage decrement (before - after) * 100 / before, per crank position (%)."""
+    before, after = table["before"].to_numpy(float), table["after"].to_numpy(float)
+    return (before - after) * 100.0 / before
+
+
 def _last_digit_unit(text: str) -> float:
     """One unit of the last printed digit of a quoted number ('0.7248' -> 1e-4, '1.3' -> 0.1)."""
     return 10.0 ** -len(text.split(".")[1]) if "." in text else 1.0
@@ -98,9 +104,7 @@ def percentage_checks(register: dict | None = None) -> pd.DataFrame:
     text = pd.read_csv(PUBLISHED_DIR / "rahman1996_section5_3.csv", comment="#", dtype=str)
     rows = []
     for quote in text.itertuples():
-        values = PublishedTable.load(f"rahman1996_table{quote.table}").values
-        before, after = values["before"].to_numpy(float), values["after"].to_numpy(float)
-        pct = (before - after) * 100.0 / before
+        pct = decrement_pct(PublishedTable.load(f"rahman1996_table{quote.table}").values)
         ends = (float(quote.range_from), float(quote.range_to))
         pair = (pct.max(), pct.min())
         if abs(ends[0] - pair[1]) + abs(ends[1] - pair[0]) < abs(ends[0] - pair[0]) + abs(ends[1] - pair[1]):

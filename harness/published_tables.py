@@ -45,3 +45,10 @@ class PublishedTable:
             decimals -= int(exponent) if exponent else 0
             return 0.5 * 10.0 ** (-decimals) if cell else np.nan
         return self.text.map(half)
+
+    def matched(self, column: str, got, rows) -> tuple[int, float]:
+        """(how many of ``got``, the values of ``column`` at the rows selected by ``rows``, are
+        within half a unit of the printed digit; the largest error, inf where ``got`` is NaN)."""
+        err = np.abs(np.asarray(got, dtype=float) - self.values.loc[rows, column].to_numpy())
+        err = np.where(np.isnan(err), np.inf, err)
+        return int((err <= self.half_unit.loc[rows, column].to_numpy() * (1 + 1e-9)).sum()), float(np.max(err))

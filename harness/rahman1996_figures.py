@@ -8,10 +8,10 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import numpy as np
 import pandas as pd
 
 from . import identities, register
+from .identities import decrement_pct
 from .csv_output import write_csv
 from .published_tables import PUBLISHED_DIR, PublishedTable
 from .report import STYLE, curve_figure, draw_all
@@ -20,12 +20,6 @@ from .scenes_rahman1996 import CRANK_DEG, legacy_tables, port_tables, printed_ru
 
 NAME = "rahman1996-figures"
 TABLES = ["5_2", "5_3", "5_4", "5_5", "5_6", "5_7"]
-
-
-def decrement_pct(table: pd.DataFrame) -> np.ndarray:
-    """(before - after) * 100 / before, per crank position (%)."""
-    before, after = table["before"].to_numpy(float), table["after"].to_numpy(float)
-    return (before - after) * 100.0 / before
 
 
 def percentages() -> pd.DataFrame:

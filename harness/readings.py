@@ -27,7 +27,6 @@ import tomllib
 from functools import lru_cache
 from pathlib import Path
 
-import numpy as np
 import pandas as pd
 
 from .engines import parse_printed_output
@@ -182,16 +181,12 @@ def _run_variant(program: str, edits: list[dict], workdir: Path) -> pd.DataFrame
 
 
 def _matched(frame: pd.DataFrame, program: str, published: PublishedTable) -> tuple[int, int, float]:
-    pub, half = published.values, published.half_unit
+    pub = published.values
     rows = pub["input_deg"] < 360          # row 360 is a copy of row 0 (D011)
     matched, total, worst = 0, 0, 0.0
     for col, quantity in zip(COLUMNS[program][1], ("dx", "dy")):
-        got = frame[quantity].reindex(pub.loc[rows, "input_deg"]).to_numpy()
-        err = np.abs(got - pub.loc[rows, col].to_numpy())
-        err = np.where(np.isnan(err), np.inf, err)
-        matched += int((err <= half.loc[rows, col].to_numpy() * (1 + 1e-9)).sum())
-        total += int(rows.sum())
-        worst = max(worst, float(np.max(err)))
+        count, err = published.matched(col, frame[quantity].reindex(pub.loc[rows, "input_deg"]), rows)
+        matched, total, worst = matched + count, total + int(rows.sum()), max(worst, err)
     return matched, total, worst
 
 
