@@ -3,7 +3,7 @@
 PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
-SOURCES := pyproject.toml meson.build $(shell find legacy port harness pkgroot -type f -not -name '*.pyc' 2>/dev/null)
+SOURCES := pyproject.toml meson.build $(shell find legacy port harness package -type f -not -name '*.pyc' 2>/dev/null)
 
 .PHONY: reproduce test bench fuzz setup clean
 
@@ -19,8 +19,8 @@ bench: $(VENV)/.installed
 
 fuzz: $(VENV)/.installed
 	$(BIN)/python -m linkrepro.harness.fuzz --calls 10000 --seed 0 --timeout 20 --out out/fuzz.json
-	HYPOTHESIS_PROFILE=thorough $(BIN)/python -m pytest -q tests/test_differential_ali1977.py \
-	  tests/test_differential_rahman.py tests/test_differential_qprog.py
+	HYPOTHESIS_PROFILE=thorough $(BIN)/python -m pytest -q tests/ali1977/test_differential.py \
+	  tests/rahman1996/test_differential.py tests/rahman1996/test_differential_qprog.py
 
 setup: $(VENV)/.installed
 

@@ -33,19 +33,19 @@ from typing import Callable
 import numpy as np
 import pandas as pd
 
-from .. import legacy
-from ..legacy import rahman1996
-from ..port import CORRECTED, PRINTED, cognate_case1, gsc, gsc_position, source_case1
-from ..port import ked_case2, ked_case3
-from ..port.cssp import CRANK_DEG, CsspInputs, balance, solve_qp
-from ..port.cssp_data import Constants
-from ..port.cssp_mechanics import closed_loop_loads, kinematics
-from ..port.cssp_objective import position_forms
-from ..port.cssp_quirks import CSSP_CORRECTED, CSSP_PRINTED
-from ..port.gsc_data import GscInputs
-from ..port.gsc_quirks import GSC_CORRECTED, GSC_PRINTED
+from ..legacy import ali1977, rahman1996
+from ..port.ali1977 import CORRECTED, PRINTED, cognate_case1, source_case1
+from ..port.rahman1991 import analysis, position as gsc_position
+from ..port.ali1977 import case2, case3
+from ..port.rahman1996.balance import CRANK_DEG, CsspInputs, balance, solve_qp
+from ..port.rahman1996.data import Constants
+from ..port.rahman1996.mechanics import closed_loop_loads, kinematics
+from ..port.rahman1996.objective import position_forms
+from ..port.rahman1996.quirks import CSSP_CORRECTED, CSSP_PRINTED
+from ..port.rahman1991.data import GscInputs
+from ..port.rahman1991.quirks import GSC_CORRECTED, GSC_PRINTED
 from . import progress
-from .case3_convergence import case3_data
+from .scenes.ali1977.case3_convergence import case3_data
 
 #: the port's package (linkrepro.port), whose caches are cleared before each timed call
 PORT = __name__.split(".")[0] + ".port"
@@ -172,12 +172,12 @@ def _relative(a: np.ndarray, b: np.ndarray) -> float:
 #: per K.E.D. case: legacy (source, cognate), port (source, cognate), the listings' quirks,
 #: the flops per angle (source + cognate)
 KED = {
-    "I": ((legacy.case1_source, legacy.case1_cognate), (source_case1, cognate_case1), (PRINTED, PRINTED),
+    "I": ((ali1977.case1_source, ali1977.case1_cognate), (source_case1, cognate_case1), (PRINTED, PRINTED),
           2 * KED_CASE1),
-    "II": ((legacy.case2_source, legacy.case2_cognate), (ked_case2.case2_source, ked_case2.case2_cognate),
-           (ked_case2.LISTING, ked_case2.COGNATE_LISTING), 2 * KED_CASE2),
-    "III": ((legacy.case3_source, legacy.case3_cognate), (ked_case3.case3_source, ked_case3.case3_cognate),
-            (ked_case3.LISTING, ked_case3.COGNATE_LISTING), KED_CASE3_SOURCE + KED_CASE1),
+    "II": ((ali1977.case2_source, ali1977.case2_cognate), (case2.case2_source, case2.case2_cognate),
+           (case2.LISTING, case2.COGNATE_LISTING), 2 * KED_CASE2),
+    "III": ((ali1977.case3_source, ali1977.case3_cognate), (case3.case3_source, case3.case3_cognate),
+            (case3.LISTING, case3.COGNATE_LISTING), KED_CASE3_SOURCE + KED_CASE1),
 }
 
 
@@ -185,7 +185,7 @@ def ked_computation(case: str, step: float) -> Computation:
     """K.E.D. Case I, II or III, source and cognate, at the listings' angle step (deg); the port
     is given the listings' own angles (their REAL*4 P2=P2+DSTEP drifts), read once untimed."""
     (leg_src, leg_cog), (src, cog), listing, flops = KED[case]
-    deg = legacy.case1_source(step_deg=step)["deg"]
+    deg = ali1977.case1_source(step_deg=step)["deg"]
 
     def port(quirks):
         return lambda: (src(deg, quirks=quirks & listing[0]), cog(deg, quirks=quirks & listing[1]))
@@ -220,11 +220,11 @@ def _cssp_newton_steps() -> float:
 def rahman_computations() -> list[Computation]:
     """The CSSP balance (1996) and the 1991 printed Newton and corrected closed loop."""
     steps = _cssp_newton_steps()
-    th10, th1 = np.radians(CRANK_DEG), np.radians(gsc.CRANK_DEG)
+    th10, th1 = np.radians(CRANK_DEG), np.radians(analysis.CRANK_DEG)
     closed = lambda: kinematics(GSC_SPATIAL, th10, np.stack(GSC_SPATIAL.axial(th10)))   # noqa: E731
     return [
         Computation("CSSP balance, Tables 5.1-5.7", len(CRANK_DEG),
-                    {"legacy": legacy.cssp, "port_printed": lambda: balance(CsspInputs(), CSSP_PRINTED),
+                    {"legacy": rahman1996.cssp, "port_printed": lambda: balance(CsspInputs(), CSSP_PRINTED),
                      "port_corrected": lambda: balance(CsspInputs(), CSSP_CORRECTED)},
                     lambda _: cssp_flops(steps), lambda leg, prt: float(np.max(
                         np.abs(prt["table"] - leg["table"]) / np.abs(leg["table"]).max(axis=0))),
@@ -239,8 +239,8 @@ def rahman_computations() -> list[Computation]:
                          f"{2 * len(th10)} Newton solves, an upper bound on its Newton; port corrected: the "
                          "closed loop's positions and rates"),
         Computation("Rahman 1991 positions, rates, joint forces, 361 angles", len(th1),
-                    {"port_printed": lambda: gsc.analyse(GSC_SPATIAL, quirks=GSC_PRINTED),
-                     "port_corrected": lambda: gsc.analyse(GSC_SPATIAL, quirks=GSC_CORRECTED)},
+                    {"port_printed": lambda: analysis.analyse(GSC_SPATIAL, quirks=GSC_PRINTED),
+                     "port_corrected": lambda: analysis.analyse(GSC_SPATIAL, quirks=GSC_CORRECTED)},
                     lambda _: CLOSED_LOOP + GSC_FORCES,
                     note="no program exists (the 1991 thesis prints none); limit: the corrected closed loop"),
     ]

@@ -90,13 +90,8 @@ def _parser() -> tuple[_Parser, dict[str, _Parser]]:
 
 def _scene_titles() -> dict[str, str]:
     """Every scene `reproduce` knows, with its title."""
-    from . import appendix, rahman1991, rahman1996_figures
     from .scenes import SCENES
-    titles = {scene.name: scene.title for scene in SCENES.values()}
-    titles[appendix.NAME] = f"{appendix.TITLE} (engine against engine)"
-    titles[rahman1996_figures.NAME] = "Rahman (1996) Figures 5.1-5.6 and the section 5.3 percentages"
-    titles[rahman1991.NAME] = rahman1991.TITLE
-    return titles
+    return {scene.name: scene.title for scene in SCENES.values()}
 
 
 def _unknown_scenes(unknown: list[str], known: list[str]) -> str:
@@ -116,10 +111,11 @@ def _under(exc: OSError, folder: Path) -> bool:
         return False
 
 
-def _summary(done: list[dict], out_dir: Path) -> None:
+def _summary(done: list, out_dir: Path) -> None:
     from .run import unexplained_count
     for item in done:
-        _out(f"{item['scene']}:\n{item['counts'].to_string()}")
+        if item.counts is not None:
+            _out(f"{item.scene}:\n{item.counts.to_string()}")
     _out(f"report: {out_dir / 'report.md'}  ({unexplained_count(done)} unexplained cells)")
 
 
@@ -189,7 +185,7 @@ def _bench(args: argparse.Namespace) -> int:
 def _arithmetic(args: argparse.Namespace) -> int:
     """``linkrepro arithmetic``: --out checked first (status 2); no gfortran or a reference build
     that fails, status 1; the markdown printed."""
-    from .arithmetic import OUTPUTS, ReferenceFailed, write
+    from .scenes.rahman1996.arithmetic import OUTPUTS, ReferenceFailed, write
     from .readings import CompilerError
     return _write_outputs(args.out, OUTPUTS, "the measurement", lambda: write(args.out)[3],
                           (CompilerError, ReferenceFailed))
@@ -199,7 +195,9 @@ def _main(argv: list[str] | None) -> int:
     parser, commands = _parser()
     args = parser.parse_args(argv)
     if args.command == "scenes":
-        _out("\n".join(f"{name:22s} {title}" for name, title in _scene_titles().items()))
+        titles = _scene_titles()
+        width = max(map(len, titles))
+        _out("\n".join(f"{name:{width}s}  {title}" for name, title in titles.items()))
         return 0
     if args.command == "reproduce":
         return _reproduce(args, commands["reproduce"])

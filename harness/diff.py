@@ -16,12 +16,15 @@ import pandas as pd
 
 from .published_tables import PublishedTable
 from .register import Deviation, by_quirk
-from .scene import Scene
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from .table_scene import TableScene
 
 STATUSES = ("match", "registered", "unexplained", "not-produced")
 
 
-def quirk_effects(scene: Scene, published: PublishedTable, base: pd.DataFrame) -> dict[str, pd.DataFrame]:
+def quirk_effects(scene: "TableScene", published: PublishedTable, base: pd.DataFrame) -> dict[str, pd.DataFrame]:
     """For each quirk: a boolean frame, True where switching it off alone moves a cell
     of the PRINTED port by more than that cell's half unit."""
     half = published.half_unit
@@ -34,7 +37,7 @@ def quirk_effects(scene: Scene, published: PublishedTable, base: pd.DataFrame) -
     return effects
 
 
-def diff_scene(scene: Scene, published: PublishedTable, results: dict[str, pd.DataFrame],
+def diff_scene(scene: "TableScene", published: PublishedTable, results: dict[str, pd.DataFrame],
                register: dict[str, Deviation]) -> pd.DataFrame:
     """Long table: one row per (engine, published cell)."""
     pub_val, pub_text, half = published.values, published.text, published.half_unit

@@ -21,7 +21,7 @@ Outcomes of a call:
 Usage::
 
     python -m linkrepro.harness.fuzz --calls 10000 --seed 0 --timeout 20 --out out/fuzz.json
-    python -m linkrepro.harness.fuzz --replay "legacy.loc(1, 1, nan, 1, 0)"
+    python -m linkrepro.harness.fuzz --replay "ali1977.loc(1, 1, nan, 1, 0)"
 
 The same seed gives the same calls.  The exit status is 1 when there are findings.
 """
@@ -195,9 +195,9 @@ def quirk_set(rng, family: str, presets: tuple) -> str:
 
 
 def _quirk_names(family: str) -> list:
-    module, cls = {"ali": ("linkrepro.port.quirks", "Quirks"),
-                   "cssp": ("linkrepro.port.cssp_quirks", "CsspQuirks"),
-                   "gsc": ("linkrepro.port.gsc_quirks", "GscQuirks")}[family]
+    module, cls = {"ali": ("linkrepro.port.ali1977.quirks", "Quirks"),
+                   "cssp": ("linkrepro.port.rahman1996.quirks", "CsspQuirks"),
+                   "gsc": ("linkrepro.port.rahman1991.quirks", "GscQuirks")}[family]
     return getattr(importlib.import_module(module), cls).names()
 
 
@@ -208,7 +208,7 @@ STEPS = ("20.0", "10.0", "1.0", "0.1", "45.0", "360.0", "7.5", "0.0018")
 
 
 def legacy_ked(func: str, mass: str):
-    """legacy.case{1,2,3}_{source,cognate}: keyword parameters, printed values as defaults."""
+    """ali1977.case{1,2,3}_{source,cognate}: keyword parameters, printed values as defaults."""
     def spec(rng):
         lengths = [("l1", 10.0), ("l2", 10.0), ("l3", 30.0), ("l4", 25.0), ("l5", 30.0)]
         args = [Arg(name, near(rng, v, spread=0.15), FLOAT, True) for name, v in lengths]
@@ -220,7 +220,7 @@ def legacy_ked(func: str, mass: str):
                  Arg("modulus", num(rng, 1e6, 3e7, 0), FLOAT, True),
                  Arg("inertia", num(rng, 1e-4, 0.1, 6), FLOAT, True),
                  Arg("step_deg", rng.choice(STEPS + (num(rng, 0.5, 400),)), FLOAT, True)]
-        return Call(f"legacy.{func}", args)
+        return Call(f"ali1977.{func}", args)
     return spec
 
 
@@ -234,7 +234,7 @@ def section_call(rng) -> Call:
 
 
 def port_ked(module: str, func: str, case: int, presets: tuple):
-    """port.ked_case*: deg plus lengths, alp, rpm, mass/density, section, quirks (and n)."""
+    """port.ali1977.case*: deg plus lengths, alp, rpm, mass/density, section, quirks (and n)."""
     def spec(rng):
         args = [Arg(None, angles(rng), ANGLES)]
         if case == 3:
@@ -312,7 +312,7 @@ def mprd_spec(rng) -> Call:
     m = n if msa else m
     l = m if msb else l
     size = {0: lambda r, c: r * c, 1: lambda r, c: r * (r + 1) // 2, 2: lambda r, c: r}
-    return Call("legacy.mprd", [Arg(None, f"rand(({size[msa](n, m)},), {any_seed(rng)})", VECTOR),
+    return Call("ali1977.mprd", [Arg(None, f"rand(({size[msa](n, m)},), {any_seed(rng)})", VECTOR),
                                 Arg(None, f"rand(({size[msb](m, l)},), {any_seed(rng)})", VECTOR),
                                 *[Arg(None, str(v), INT) for v in (n, m, l)],
                                 Arg("msa", str(msa), INT), Arg("msb", str(msb), INT)])
@@ -330,58 +330,58 @@ class Entry:
 
 def entries() -> list:
     """Every public entry point (the port's QPROG only if it exists yet)."""
-    case2 = ("ked_case2.LISTING", "ked_case2.COGNATE_LISTING")
-    case3 = ("ked_case3.LISTING", "ked_case3.COGNATE_LISTING")
-    out = [Entry(f"legacy.{f}", legacy_ked(f, "mass_lbf" if f.startswith("case1") else "density"), angles=True)
+    case2 = ("port.ali1977.case2.LISTING", "port.ali1977.case2.COGNATE_LISTING")
+    case3 = ("port.ali1977.case3.LISTING", "port.ali1977.case3.COGNATE_LISTING")
+    out = [Entry(f"ali1977.{f}", legacy_ked(f, "mass_lbf" if f.startswith("case1") else "density"), angles=True)
            for f in ("case1_source", "case1_cognate", "case2_source", "case2_cognate", "case3_source", "case3_cognate")]
     out += [
-        Entry("legacy.gmtra", lambda rng: Call("legacy.gmtra", [
+        Entry("ali1977.gmtra", lambda rng: Call("ali1977.gmtra", [
             Arg(None, f"rand(({rng.randint(1, 5)}, {rng.randint(1, 5)}), {any_seed(rng)})", MATRIX)])),
-        Entry("legacy.mprd", mprd_spec),
-        Entry("legacy.loc", lambda rng: Call("legacy.loc", [Arg(None, str(rng.randint(1, 6)), INT) for _ in range(4)]
+        Entry("ali1977.mprd", mprd_spec),
+        Entry("ali1977.loc", lambda rng: Call("ali1977.loc", [Arg(None, str(rng.randint(1, 6)), INT) for _ in range(4)]
                                              + [Arg(None, str(rng.randint(0, 2)), INT)])),
-        Entry("legacy.angle_grid", lambda rng: Call("legacy.angle_grid", [Arg(None, num(rng, 0.5, 400.0), FLOAT)])),
-        Entry("legacy.cssp", lambda rng: Call("legacy.cssp", cssp_inputs(rng).args + [
+        Entry("ali1977.angle_grid", lambda rng: Call("ali1977.angle_grid", [Arg(None, num(rng, 0.5, 400.0), FLOAT)])),
+        Entry("rahman1996.cssp", lambda rng: Call("rahman1996.cssp", cssp_inputs(rng).args + [
             Arg("solution", rng.choice(["None", f"0.001 + 0.01 * np.abs(rand((9,), {any_seed(rng)}))"]),
                 VECTOR, True)]),
               angles=True),
-        Entry("legacy.inverse", lambda rng: Call("legacy.inverse", [Arg(None, matrix5(rng), MATRIX)])),
-        Entry("legacy.qprog", qp_spec("legacy.qprog")),
-        Entry("port.ked_case1.source_case1", port_ked("ked_case1", "source_case1", 1, ()), angles=True),
-        Entry("port.ked_case1.cognate_case1", port_ked("ked_case1", "cognate_case1", 1, ()), angles=True),
-        Entry("port.ked_case2.case2_source", port_ked("ked_case2", "case2_source", 2, case2), angles=True),
-        Entry("port.ked_case2.case2_cognate", port_ked("ked_case2", "case2_cognate", 2, case2), angles=True),
-        Entry("port.ked_case3.case3_source", port_ked("ked_case3", "case3_source", 3, case3), angles=True),
-        Entry("port.ked_case3.case3_cognate", port_ked("ked_case3", "case3_cognate", 3, case3), angles=True),
-        Entry("port.cssp.balance", lambda rng: Call("cssp.balance", [
+        Entry("rahman1996.inverse", lambda rng: Call("rahman1996.inverse", [Arg(None, matrix5(rng), MATRIX)])),
+        Entry("rahman1996.qprog", qp_spec("rahman1996.qprog")),
+        Entry("port.ali1977.case1.source_case1", port_ked("port.ali1977.case1", "source_case1", 1, ()), angles=True),
+        Entry("port.ali1977.case1.cognate_case1", port_ked("port.ali1977.case1", "cognate_case1", 1, ()), angles=True),
+        Entry("port.ali1977.case2.case2_source", port_ked("port.ali1977.case2", "case2_source", 2, case2), angles=True),
+        Entry("port.ali1977.case2.case2_cognate", port_ked("port.ali1977.case2", "case2_cognate", 2, case2), angles=True),
+        Entry("port.ali1977.case3.case3_source", port_ked("port.ali1977.case3", "case3_source", 3, case3), angles=True),
+        Entry("port.ali1977.case3.case3_cognate", port_ked("port.ali1977.case3", "case3_cognate", 3, case3), angles=True),
+        Entry("port.rahman1996.balance.balance", lambda rng: Call("port.rahman1996.balance.balance", [
             Arg("inputs", cssp_inputs(rng), CONTAINER, True),
             Arg("quirks", quirk_set(rng, "cssp", ("CSSP_PRINTED", "CSSP_CORRECTED")), QUIRKS, True)]), angles=True),
-        Entry("port.cssp.solve_qp", lambda rng: Call("cssp.solve_qp", [
+        Entry("port.rahman1996.balance.solve_qp", lambda rng: Call("port.rahman1996.balance.solve_qp", [
             Arg(None, f"1e-3 * spd(9, {any_seed(rng)}{rng.choice(['', ', rank=6'])})", MATRIX),
             Arg("rows", "QP_ROWS", MATRIX, True),
             Arg("bounds", rng.choice(["QP_BOUNDS", f"0.01 * np.abs(rand((11,), {any_seed(rng)}))"]), VECTOR),
             Arg("equalities", rng.choice(["3", str(rng.randint(0, 11))]), INT, True)])),
-        Entry("port.cssp_listing.printed_inverse", lambda rng: Call("cssp_listing.printed_inverse",
+        Entry("port.rahman1996.listing.printed_inverse", lambda rng: Call("port.rahman1996.listing.printed_inverse",
                                                                     [Arg(None, matrix5(rng), MATRIX)])),
-        Entry("port.gsc.analyse", lambda rng: Call("gsc.analyse", [
+        Entry("port.rahman1991.analysis.analyse", lambda rng: Call("port.rahman1991.analysis.analyse", [
             Arg("inputs", gsc_inputs(rng), CONTAINER, True),
             Arg("crank_deg", angles(rng, most=12), ANGLES, True),
             Arg("quirks", quirk_set(rng, "gsc", ("GSC_PRINTED", "GSC_CORRECTED")), QUIRKS, True),
             Arg("strict", rng.choice(["False", "True"]), FLAG, True)]), angles=True, scrub="gsc"),
-        Entry("port.cssp_data.CsspInputs", lambda rng: cssp_inputs(rng)),
-        Entry("port.gsc_data.GscInputs", lambda rng: gsc_inputs(rng)),
-        Entry("port.fourbar.Lengths", lengths_call),
-        Entry("port.ked_case1.Section", section_call),
+        Entry("port.rahman1996.data.CsspInputs", lambda rng: cssp_inputs(rng)),
+        Entry("port.rahman1991.data.GscInputs", lambda rng: gsc_inputs(rng)),
+        Entry("port.ali1977.fourbar.Lengths", lengths_call),
+        Entry("port.ali1977.case1.Section", section_call),
     ]
     if _port_qprog() is not None:
-        out.append(Entry("port.qprog.qprog", qp_spec("qprog.qprog")))
+        out.append(Entry("port.rahman1996.qprog.qprog", qp_spec("port.rahman1996.qprog.qprog")))
     return out
 
 
 def _port_qprog():
-    """linkrepro.port.qprog if it defines ``qprog`` (another engineer is writing it)."""
+    """linkrepro.port.rahman1996.qprog if it defines ``qprog`` (another engineer is writing it)."""
     try:
-        module = importlib.import_module("linkrepro.port.qprog")
+        module = importlib.import_module("linkrepro.port.rahman1996.qprog")
     except ImportError:
         return None
     return module if callable(getattr(module, "qprog", None)) else None
@@ -454,16 +454,25 @@ def spd(n, seed_value, rank=None):
 def namespace() -> dict:
     """The names a call text may use."""
     import numpy as np
-    from linkrepro import AssemblyError, ConvergenceError, LinkageError, QPError, SingularPositionError, legacy
-    from linkrepro.port import cssp, cssp_listing, gsc, ked_case1, ked_case2, ked_case3
-    from linkrepro.port.cssp_data import QP_BOUNDS, QP_ROWS, CsspInputs
-    from linkrepro.port.fourbar import Lengths
-    from linkrepro.port.gsc_data import GscInputs
-    from linkrepro.port.gsc_quirks import GSC_CORRECTED, GSC_PRINTED
-    from linkrepro.port.cssp_quirks import CSSP_CORRECTED, CSSP_PRINTED
-    from linkrepro.port.quirks import CORRECTED, PRINTED
+    from linkrepro import AssemblyError, ConvergenceError, LinkageError, QPError, SingularPositionError
+    from linkrepro.legacy import ali1977, rahman1996
+    import linkrepro.port.ali1977.case1
+    import linkrepro.port.ali1977.case2
+    import linkrepro.port.ali1977.case3
+    import linkrepro.port.rahman1991.analysis
+    import linkrepro.port.rahman1996.balance
+    import linkrepro.port.rahman1996.listing
+    import linkrepro.port.rahman1996.qprog
+    from linkrepro import port
+    from linkrepro.port.ali1977.case1 import Section
+    from linkrepro.port.rahman1996.data import QP_BOUNDS, QP_ROWS, CsspInputs
+    from linkrepro.port.ali1977.fourbar import Lengths
+    from linkrepro.port.rahman1991.data import GscInputs
+    from linkrepro.port.rahman1991.quirks import GSC_CORRECTED, GSC_PRINTED
+    from linkrepro.port.rahman1996.quirks import CSSP_CORRECTED, CSSP_PRINTED
+    from linkrepro.port.ali1977.quirks import CORRECTED, PRINTED
     ns = dict(locals())
-    ns.update(nan=math.nan, inf=math.inf, Section=ked_case1.Section, rand=rand, spd=spd, qprog=_port_qprog())
+    ns.update(nan=math.nan, inf=math.inf, rand=rand, spd=spd)
     return ns
 
 
@@ -555,8 +564,8 @@ def _gsc_documented(frame):
     pd = sys.modules.get("pandas")
     if pd is None or not isinstance(frame, pd.DataFrame) or "converged" not in frame:
         return frame
-    from linkrepro.port import gsc_forces
-    from linkrepro.port.gsc import DEAD_CENTRE
+    from linkrepro.port.rahman1991 import forces as gsc_forces
+    from linkrepro.port.rahman1991.analysis import DEAD_CENTRE
     kept = frame[frame["converged"].astype(bool)]
     if "status" not in kept:
         return kept

@@ -229,7 +229,7 @@ def measure(table: str = "ali1977_table1") -> pd.DataFrame:
 
 def _cssp_sources() -> bool:
     """legacy/src's CSSP sources (and what arithmetic.py's build needs) are at hand."""
-    from .arithmetic import LEGACY_DIR, PRINTED, SRC
+    from .scenes.rahman1996.arithmetic import LEGACY_DIR, PRINTED, SRC
     return all((LEGACY_DIR / path).is_file() for path in SRC + PRINTED)
 
 
@@ -257,7 +257,7 @@ def cssp_counts(readings: tuple) -> tuple[pd.DataFrame, dict[str, str], float]:
     of the published value and the largest change from the chosen build (relative); failures
     the builds that did not build or run (name: why).  Cached: the six scenes share one call.
     ``ValueError`` if a chosen line is not in legacy/src; ``CompilerError`` if the chosen build fails."""
-    from . import arithmetic
+    from .scenes.rahman1996 import arithmetic
     texts = {name: (SRC_DIR / name).read_text() for name in CSSP_FILES}
     variants = [arithmetic.Variant("chosen", "legacy/src as it is: the readings as chosen", False)]
     for k, (entry, group, items) in enumerate(readings):

@@ -1,53 +1,78 @@
-"""A Scene: one published table, the inputs the engines run with, and how each engine
-produces the table in the published table's columns."""
+"""The scene protocol: what the runner (``harness/run.py``) knows of a scene.
+
+A scene is anything a thesis shows that a run reproduces: a published table, a set of
+curves, figures, claims in words.  Every scene has
+
+- ``name``: its folder under the output folder, and how ``linkrepro reproduce NAME`` selects it;
+- ``title``: one line for ``linkrepro scenes`` and the run's report;
+- ``group``: scenes of one group run in one process, in their listed order (they share a
+  computation, cached for the process); the groups run side by side on the cores;
+- ``start``: a scheduling hint, the groups start in increasing order of their smallest
+  ``start`` (the longest first, and a group that loads compiled kernels after the one that
+  compiles them);
+- ``write(out_dir, options) -> Outcome``: write ``out_dir/<name>/`` (CSVs, figures,
+  ``report.md``) and return what the run's report says of it.
+
+Two kinds implement it: ``TableScene`` (one published table: every engine, the cell-by-cell
+diff, the register; ``harness/table_scene.py``) and ``ReportScene`` (anything else: a
+function that writes the scene's folder, one that summarises what it measured).  The
+scenes themselves live in ``harness/scenes/<thesis>/``; the runner names none of them.
+"""
 from __future__ import annotations
 
+import time
 from dataclasses import dataclass, field
-from typing import Any, Callable
+from pathlib import Path
+from typing import Any, Callable, Protocol
 
 import pandas as pd
 
-from ..port import CORRECTED, PRINTED
+from .engines import PrintedProgramError
 
 
 @dataclass(frozen=True)
-class Scene:
+class RunOptions:
+    """What a run asks of every scene."""
+    measure_readings: bool = True        # rebuild the listings with the scan's readings (gfortran)
+
+
+@dataclass
+class Outcome:
+    """What a scene's run gives the run's report: markdown lines under its heading, its wall
+    time (s), the cells per engine and status (table scenes), what could not run."""
+    scene: str
+    title: str
+    overview: list[str]
+    seconds: float
+    counts: pd.DataFrame | None = None
+    failures: list[str] = field(default_factory=list)
+
+
+class Scene(Protocol):
     name: str
     title: str
-    table: str                                   # harness/published/<table>.csv
-    columns: list[str]
-    key: str | tuple[str, ...]                   # the column(s) naming a row
-    inputs: str                                  # what the engines are run with, in words
-    printed: Callable[[], pd.DataFrame]
-    legacy: Callable[[], pd.DataFrame]
-    port: Callable[[Any], pd.DataFrame]          # quirks restricted to each listing's own (&)
-    notes: list[str] = field(default_factory=list)
-    quirks: tuple = (PRINTED, CORRECTED)         # the port's (printed, corrected) switch sets
-    rel_floor: float = 0.0                       # below it a non-matching cell is machine arithmetic ...
-    floor_id: str | None = None                  # ... as this register entry shows (measured)
+    group: str
+    start: int
 
-    @property
-    def keys(self) -> tuple[str, ...]:
-        return (self.key,) if isinstance(self.key, str) else tuple(self.key)
-
-    @property
-    def key_name(self) -> str:
-        return "/".join(self.keys)
-
-    @property
-    def values(self) -> list[str]:
-        """The numeric columns (every column but the key)."""
-        return [c for c in self.columns if c not in self.keys]
-
-    def run(self, engine: str) -> pd.DataFrame:
-        if engine == "printed":
-            return self.printed()
-        if engine == "legacy":
-            return self.legacy()
-        if engine == "port_printed":          # each program with its own listing's quirks
-            return self.port(self.quirks[0])
-        if engine == "port_corrected":
-            return self.port(self.quirks[1])
-        raise ValueError(f"unknown engine {engine!r}")
+    def write(self, out_dir: Path, options: RunOptions) -> Outcome: ...
 
 
+@dataclass(frozen=True)
+class ReportScene:
+    """A scene without a published table: ``produce(out_dir)`` writes ``out_dir/<name>/`` and
+    returns what it measured; ``overview(result)`` gives the run report's lines about it."""
+    name: str
+    title: str
+    group: str
+    start: int
+    produce: Callable[[Path], Any]
+    overview: Callable[[Any], list[str]]
+
+    def write(self, out_dir: Path, options: RunOptions) -> Outcome:
+        begin = time.perf_counter()
+        try:
+            result = self.produce(out_dir)
+        except PrintedProgramError as exc:
+            return Outcome(self.name, self.title, [], time.perf_counter() - begin,
+                           failures=[f"not written, engine printed failed: {exc}"])
+        return Outcome(self.name, self.title, self.overview(result), time.perf_counter() - begin)

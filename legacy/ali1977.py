@@ -1,5 +1,5 @@
-"""Python face of the compiled FORTRAN: Ali 1977 (Appendix B, the IBM SSP routines) here,
-Rahman 1996 (CSSP, INVERSE, our QPROG) in :mod:`.rahman1996`.
+"""Python face of Ali (1977), Appendix B: the K.E.D. listings of Cases I-III and the IBM SSP
+routines they call (Rahman 1996 is :mod:`.rahman1996`).
 
 The functions call the cleaned listings in ``legacy/src`` through f2py and return
 numpy arrays, one value per input angle.  Defaults are the values the printed
@@ -36,7 +36,6 @@ from . import _ali1977 as _f
 
 #: held around every call into the compiled Ali (1977) FORTRAN (static storage)
 FORTRAN_LOCK = threading.Lock()
-from .rahman1996 import CSSP_COLUMNS, QPError, cssp, inverse, qprog
 
 #: Constants as the printed REAL*4 literals hold them (IEEE single here; see D030).
 PI_PRINTED = float(np.float32(3.142857143))
@@ -46,7 +45,7 @@ CA_PRINTED = float(np.float32(0.1963495408))          # in^2
 ME_PRINTED = float(np.float32(10000000.0))            # psi
 MI_PRINTED = float(np.float32(0.0030679615))          # in^4
 
-__all__ = ["qprog", "QPError", "cssp", "inverse", "CSSP_COLUMNS", "case1_source", "case1_cognate", "case2_source", "case2_cognate", "case3_source", "case3_cognate", "gmtra", "mprd", "loc",
+__all__ = ["case1_source", "case1_cognate", "case2_source", "case2_cognate", "case3_source", "case3_cognate", "gmtra", "mprd", "loc",
            "angle_grid"]
 
 #: DNTY=0.098 (lb/in^3, aluminium) as the REAL*4 literal holds it (Cases II, III).

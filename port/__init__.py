@@ -1,11 +1,11 @@
-"""The clean Python port: numpy, vectorised over input angles.
+"""The clean Python port: numpy (and numba kernels), vectorised over input angles.
 
-``quirks=PRINTED`` reproduces the legacy FORTRAN; ``quirks=CORRECTED`` removes
-every registered bug of the original.  See ``quirks.Quirks`` for the switches.
+One subpackage per thesis: :mod:`.ali1977` (K.E.D. four-bar, Cases I-III), :mod:`.rahman1996`
+(CSSP balancing), :mod:`.rahman1991` (the generalized slider crank).  Shared by them:
+:mod:`.quirks` (the quirk-switch base), :mod:`.dual` (dual numbers), :mod:`.real4` (REAL*4
+storage), :mod:`.libm` (the C library's single-precision functions) and :mod:`.slider_crank`
+(the spatial slider-crank loop both Rahman theses solve).
+
+Each thesis's quirk set turns its listings' bugs on (``PRINTED``: the port reproduces the
+legacy FORTRAN) or off (``CORRECTED``: what the thesis meant), one named switch per bug.
 """
-from .fourbar import Cognate, Lengths
-from .ked_case1 import EXAMPLE, Section, cognate_case1, source_case1
-from .quirks import CORRECTED, PRINTED, Quirks
-
-__all__ = ["CORRECTED", "PRINTED", "Quirks", "Lengths", "Section", "Cognate", "EXAMPLE",
-           "source_case1", "cognate_case1"]

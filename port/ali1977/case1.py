@@ -40,12 +40,11 @@ from dataclasses import dataclass, field
 import numpy as np
 from numba import njit
 
-from ..checks import angles_deg, as_real4, parameter, speed_rpm, weight_lbf
-from . import libm
-from .fourbar import (Cognate, Lengths, cannot_close, check_finite, freudenstein_constants, half_angle_roots,
-                      raise_first_assembly_failure, raise_if_cannot_close)
+from ...checks import angles_deg, as_real4, parameter, speed_rpm, weight_lbf
+from .. import libm
+from .fourbar import Cognate, Lengths, cannot_close, check_finite, freudenstein_constants, half_angle_roots, raise_first_assembly_failure, raise_if_cannot_close
 from .quirks import CORRECTED, PRINTED, Quirks
-from .real4 import product, store
+from ..real4 import product, store
 
 #: The listings' PI=3.142857143 (22/7) as the REAL*4 literal holds it (D011).
 PI_22_7 = float(np.float32(3.142857143))

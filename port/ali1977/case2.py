@@ -16,13 +16,12 @@ from types import SimpleNamespace
 import numpy as np
 from numba import njit
 
-from ..checks import angles_deg, as_real4, weight_lbf
-from . import libm
+from ...checks import angles_deg, as_real4, weight_lbf
+from .. import libm
 from .fourbar import Lengths, check_finite
-from .ked_case1 import (EXAMPLE, GRAVITY_IN, GRAVITY_REAL4, Section, _cognate_linkage, _pi, _source_linkage,
-                        deflection, expect, flexibility)
+from .case1 import EXAMPLE, GRAVITY_IN, GRAVITY_REAL4, Section, _cognate_linkage, _pi, _source_linkage, deflection, expect, flexibility
 from .quirks import PRINTED, Quirks
-from .real4 import store
+from ..real4 import store
 
 #: The bugs the Case II source listing has (those of Case I's source listing but the
 #: 101 deg coupler angle and the 400 rpm, which are the Case I listing's alone).

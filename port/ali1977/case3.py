@@ -24,13 +24,12 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from ..checks import angles_deg, as_real4, parameter, weight_lbf
-from . import libm
+from ...checks import angles_deg, as_real4, parameter, weight_lbf
+from .. import libm
 from .fourbar import Lengths, check_finite
-from .ked_case1 import (EXAMPLE, GRAVITY_IN, GRAVITY_REAL4, Section, SourceLinkage, _cognate_linkage, _pi,
-                        _source_linkage, cramer_determinant, deflection, expect, flexibility)
+from .case1 import EXAMPLE, GRAVITY_IN, GRAVITY_REAL4, Section, SourceLinkage, _cognate_linkage, _pi, _source_linkage, cramer_determinant, deflection, expect, flexibility
 from .quirks import PRINTED, Quirks
-from .real4 import store
+from ..real4 import store
 
 #: The bugs the Case III source listing has: Case I's fixed I1 (L3), the bending
 #: flexibility (E*I), 60 deg and 300 rpm; it adds the node masses and the uncoupled nodes.

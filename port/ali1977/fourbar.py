@@ -18,9 +18,9 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
-from ..checks import parameter
-from ..errors import AssemblyError, SingularPositionError
-from . import libm
+from ...checks import parameter
+from ...errors import AssemblyError, SingularPositionError
+from .. import libm
 
 
 @dataclass(frozen=True)

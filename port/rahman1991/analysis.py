@@ -17,12 +17,12 @@ import itertools
 import numpy as np
 import pandas as pd
 
-from ..checks import angles_deg
-from ..errors import AssemblyError, ConvergenceError, SingularPositionError
-from . import gsc_forces, gsc_position, gsc_printed_rates, gsc_rates
-from .cssp_mechanics import kinematics
-from .gsc_data import GscInputs
-from .gsc_quirks import GSC_PRINTED, GscQuirks
+from ...checks import angles_deg
+from ...errors import AssemblyError, ConvergenceError, SingularPositionError
+from . import forces as gsc_forces, position, printed_rates as gsc_printed_rates, rates as gsc_rates
+from ..rahman1996.mechanics import kinematics
+from .data import GscInputs
+from .quirks import GSC_PRINTED, GscQuirks
 
 KINEMATICS = ["s4", "theta2", "eta2", "theta3", "eta3"]
 COLUMNS = (["a4", "alpha4_deg", "s1", "crank_deg", "converged"] + KINEMATICS + gsc_forces.COMPONENTS)
@@ -50,7 +50,7 @@ def printed_rates(q, inputs: GscInputs, theta1, sine_denominators: bool):
 
 
 def _five_variable(inputs: GscInputs, th: np.ndarray, quirks: GscQuirks, run=None):
-    run = run if run is not None else gsc_position.positions(inputs, th)
+    run = run if run is not None else position.positions(inputs, th)
     ok = run.converged
     forces = {name: np.full(th.size, np.nan) for name in gsc_forces.COMPONENTS}
     if np.any(ok):
@@ -73,9 +73,9 @@ def ball_angles(kin) -> tuple[np.ndarray, np.ndarray]:
 
 def _closed_loop(inputs: GscInputs, th: np.ndarray):
     n = th.size
-    q, status, closure = np.full((n, 5), np.nan), np.full(n, gsc_position.CANNOT_ASSEMBLE, dtype=object), np.full(n, np.nan)
+    q, status, closure = np.full((n, 5), np.nan), np.full(n, position.CANNOT_ASSEMBLE, dtype=object), np.full(n, np.nan)
     forces = {name: np.full(n, np.nan) for name in gsc_forces.COMPONENTS}
-    ok = gsc_position.assembles(inputs, th, inputs.axial(th)[0])
+    ok = position.assembles(inputs, th, inputs.axial(th)[0])
     if np.any(ok):
         kin = kinematics(inputs, th[ok], np.stack(inputs.axial(th[ok])))
         theta3, eta3 = ball_angles(kin)
@@ -94,7 +94,7 @@ def analyse(inputs: GscInputs = GscInputs(), crank_deg=CRANK_DEG, quirks: GscQui
             strict: bool = False, positions=None) -> pd.DataFrame:
     """One configuration over crank angles (deg, in sweep order).  ``strict``: raise the typed
     error of the first failed angle (AssemblyError, ConvergenceError, SingularPositionError)
-    instead of returning non-converged rows.  ``positions``: a ``gsc_position.PositionRun``
+    instead of returning non-converged rows.  ``positions``: a ``position.PositionRun``
     already solved for these angles (the printed model only).  ``crank_deg``: a non-empty
     1-D array of finite angles (ValueError otherwise, TypeError if not numbers)."""
     if not isinstance(inputs, GscInputs):
@@ -106,7 +106,7 @@ def analyse(inputs: GscInputs = GscInputs(), crank_deg=CRANK_DEG, quirks: GscQui
         q, status, closure, forces, iterations = _five_variable(inputs, th, quirks, positions)
     else:
         q, status, closure, forces, iterations = _closed_loop(inputs, th)
-    converged = np.isin(status, [gsc_position.NEWTON, gsc_position.DFP_THEN_NEWTON, "closed", DEAD_CENTRE])
+    converged = np.isin(status, [position.NEWTON, position.DFP_THEN_NEWTON, "closed", DEAD_CENTRE])
     if strict:
         _raise_first(status, np.degrees(th))
     frame = pd.DataFrame({"a4": inputs.a4, "alpha4_deg": inputs.alpha4_deg, "s1": inputs.s1,
@@ -122,8 +122,8 @@ def analyse(inputs: GscInputs = GscInputs(), crank_deg=CRANK_DEG, quirks: GscQui
 
 
 def _raise_first(status: np.ndarray, deg: np.ndarray) -> None:
-    errors = {gsc_position.CANNOT_ASSEMBLE: (AssemblyError, "GSC: the rod cannot reach the slider axis"),
-              gsc_position.NOT_CONVERGED: (ConvergenceError, "GSC: Newton-Raphson and DFP did not converge"),
+    errors = {position.CANNOT_ASSEMBLE: (AssemblyError, "GSC: the rod cannot reach the slider axis"),
+              position.NOT_CONVERGED: (ConvergenceError, "GSC: Newton-Raphson and DFP did not converge"),
               DEAD_CENTRE: (SingularPositionError, "GSC: dead centre, the crank torque cannot be balanced")}
     for i, s in enumerate(status):
         if s in errors:
@@ -138,6 +138,6 @@ def sweep(quirks: GscQuirks = GSC_PRINTED, a4=GRID_A4, alpha4_deg=GRID_ALPHA4, s
     configs = [GscInputs(a4=x, alpha4_deg=y, s1=z) for x, y, z in itertools.product(a4, alpha4_deg, s1)]
     runs = [None] * len(configs)
     if quirks.five_variable_loop:
-        runs = gsc_position.positions_batch(configs, np.radians(np.asarray(crank_deg, dtype=float)))
+        runs = position.positions_batch(configs, np.radians(np.asarray(crank_deg, dtype=float)))
     frames = [analyse(inputs, crank_deg, quirks, positions=run) for inputs, run in zip(configs, runs)]
     return pd.concat(frames, ignore_index=True)

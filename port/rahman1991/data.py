@@ -15,8 +15,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..checks import parameter
-from .cssp_data import CsspInputs
+from ...checks import parameter
+from ..rahman1996.data import CsspInputs
 
 #: g (in/s^2), the example's weight density (lbf/in^3, "specific gravity d = 0.28")
 GRAVITY = 386.4

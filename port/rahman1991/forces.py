@@ -19,8 +19,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..errors import SingularPositionError
-from .gsc_data import GscInputs, MassModel
+from ...errors import SingularPositionError
+from .data import GscInputs, MassModel
 
 COMPONENTS = ["F1i", "F1j", "F1k", "T1i", "T1j", "T1k", "F2i", "F2j", "F2k", "F3i", "F3j", "F3k",
               "F4i", "F4j", "F4k", "T4i", "T4j", "T4k"]

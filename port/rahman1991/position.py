@@ -24,10 +24,10 @@ from dataclasses import dataclass, replace
 import numpy as np
 from numba import njit
 
-from . import spatial_newton as kernel
-from .cssp_data import Constants, CsspInputs
-from .cssp_listing import initial_estimate
-from .gsc_data import GscInputs
+from ..slider_crank import newton as kernel
+from ..rahman1996.data import Constants, CsspInputs
+from ..rahman1996.listing import initial_estimate
+from .data import GscInputs
 
 DFP_ITERATIONS = 400
 #: statuses of a position

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .quirks import QuirkSwitches
+from ..quirks import QuirkSwitches
 
 
 @dataclass(frozen=True)

@@ -19,12 +19,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import QPError, SingularPositionError
+from ...errors import QPError, SingularPositionError
 from . import qprog
-from .cssp_data import QP_EQUALITIES, QP_ROWS, Constants, CsspInputs, qp_constraints
-from .cssp_listing import Carry, initial_estimate, listing_pass, unit_loads
-from .cssp_objective import UnitLoads, objective, position_forms, table_quantities
-from .cssp_quirks import CSSP_CORRECTED, CSSP_PRINTED, CsspQuirks
+from .data import QP_EQUALITIES, QP_ROWS, Constants, CsspInputs, qp_constraints
+from .listing import Carry, initial_estimate, listing_pass, unit_loads
+from .objective import UnitLoads, objective, position_forms, table_quantities
+from .quirks import CSSP_CORRECTED, CSSP_PRINTED, CsspQuirks
 
 __all__ = ["CsspInputs", "balance", "solve_qp", "hessian_shift", "link_masses", "CRANK_DEG", "CSSP_PRINTED",
            "CSSP_CORRECTED"]
@@ -90,7 +90,7 @@ def _passes(inputs: CsspInputs, quirks: CsspQuirks, c: Constants):
             loads, carry = unit_loads(motion, c, quirks, carry)
             yield Pass(loads, position_forms(loads, c, quirks, positions))
         return
-    from .cssp_mechanics import closed_loop_loads
+    from .mechanics import closed_loop_loads
     loads = closed_loop_loads(c, np.radians(CRANK_DEG))
     yield Pass(loads, position_forms(loads, c, quirks, positions))
 

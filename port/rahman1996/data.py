@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..checks import parameter
+from ...checks import parameter
 
 #: g (in/s^2) and the weights (lbf) of crank, connecting rod and slider
 GRAVITY = 386.4

@@ -22,13 +22,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..checks import finite_matrix
-from ..errors import ConvergenceError, SingularPositionError
-from . import spatial_newton as kernel
-from .cssp_data import Constants
-from .cssp_objective import UnitLoads
-from .cssp_quirks import CsspQuirks
-from .dual import DualMatrix
+from ...checks import finite_matrix
+from ...errors import ConvergenceError, SingularPositionError
+from ..slider_crank import newton as kernel
+from .data import Constants
+from .objective import UnitLoads
+from .quirks import CsspQuirks
+from ..dual import DualMatrix
 
 _ROT_OPERATOR = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 0.0]])
 

@@ -35,9 +35,9 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from ..errors import AssemblyError, SingularPositionError
-from .cssp_data import CsspInputs
-from .dual import skew
+from ...errors import AssemblyError, SingularPositionError
+from .data import CsspInputs
+from ..dual import skew
 
 TINY = 1e-9  # relative distance to a singular position below which we refuse
 
@@ -296,8 +296,8 @@ def closed_loop_loads(c, theta1_rad):
     Bearing moments: M1 without its z-component (T0), M2 of the Hooke joint, M3 = 0 of the
     ball joint, M4 of the slider's guide.
     """
-    from .cssp_data import GRAVITY
-    from .cssp_objective import UnitLoads as ObjectiveLoads
+    from .data import GRAVITY
+    from .objective import UnitLoads as ObjectiveLoads
     masses = np.asarray(c.masses)
     radii = tuple(tuple(np.sqrt(np.asarray(i) / m)) for i, m in ((c.inertia_crank, masses[0]),
                                                                   (c.inertia_rod, masses[1])))

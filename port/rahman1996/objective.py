@@ -13,8 +13,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .cssp_data import Constants
-from .cssp_quirks import CsspQuirks
+from .data import Constants
+from .quirks import CsspQuirks
 
 
 @dataclass

@@ -30,8 +30,8 @@ import math
 import numpy as np
 from numba import njit
 
-from ..checks import finite_matrix, qp_arguments
-from ..errors import QPError
+from ...checks import finite_matrix, qp_arguments
+from ...errors import QPError
 
 #: DQPROG's PARAMETERs: at most 60 variables and 200 constraints
 MAXV, MAXC = 60, 200

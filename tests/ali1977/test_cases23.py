@@ -4,38 +4,38 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 
-from linkrepro import legacy
-from linkrepro.port import CORRECTED, Lengths, source_case1
-from linkrepro.port.ked_case1 import EXAMPLE, cognate_mechanics, deflection, flexibility, source_mechanics
-from linkrepro.port.ked_case2 import COGNATE_COUPLER, LISTING as CASE2, beta2, case2_cognate, case2_source, joint_loads
-from linkrepro.port.ked_case3 import LISTING as CASE3, _coupled_tip, case3_cognate, case3_source, node_positions
+from linkrepro.legacy import ali1977
+from linkrepro.port.ali1977 import CORRECTED, Lengths, source_case1
+from linkrepro.port.ali1977.case1 import EXAMPLE, cognate_mechanics, deflection, flexibility, source_mechanics
+from linkrepro.port.ali1977.case2 import COGNATE_COUPLER, LISTING as CASE2, beta2, case2_cognate, case2_source, joint_loads
+from linkrepro.port.ali1977.case3 import LISTING as CASE3, _coupled_tip, case3_cognate, case3_source, node_positions
 
 DEG = np.arange(0.0, 361.0, 1.0)
 AREA, DENSITY = EXAMPLE.section.area, 0.098
 
 
 def test_case2_port_equals_legacy():
-    port, leg = case2_source(DEG, quirks=CASE2), legacy.case2_source(step_deg=1.0)
+    port, leg = case2_source(DEG, quirks=CASE2), ali1977.case2_source(step_deg=1.0)
     for key in ("xp", "yp", "dx", "dy", "rot"):
         np.testing.assert_allclose(port[key], leg[key], rtol=1e-9, atol=1e-300, err_msg=key)
 
 
 def test_case2_cognate_reconstruction_port_equals_legacy():
     """The reconstructed page (D037) is the same in the FORTRAN and in the port."""
-    port, leg = case2_cognate(DEG), legacy.case2_cognate(step_deg=1.0)
+    port, leg = case2_cognate(DEG), ali1977.case2_cognate(step_deg=1.0)
     for key in ("xp", "yp", "cxp", "cyp", "dx", "dy", "rot"):
         np.testing.assert_allclose(port[key], leg[key], rtol=1e-9, atol=1e-300, err_msg=key)
 
 
 def test_case3_cognate_reconstruction_port_equals_legacy():
-    port, leg = case3_cognate(DEG), legacy.case3_cognate(step_deg=1.0)
+    port, leg = case3_cognate(DEG), ali1977.case3_cognate(step_deg=1.0)
     for key in ("xp", "yp", "dx", "dy", "rot"):
         np.testing.assert_allclose(port[key], leg[key], rtol=1e-9, atol=1e-300, err_msg=key)
 
 
 def test_case3_port_equals_legacy_for_every_node():
     """dx, dy and the rotation of all five nodes, with the listing's slips D035, D036."""
-    port, leg = case3_source(DEG, quirks=CASE3, all_nodes=True), legacy.case3_source(step_deg=1.0)
+    port, leg = case3_source(DEG, quirks=CASE3, all_nodes=True), ali1977.case3_source(step_deg=1.0)
     for key in ("xp", "yp", "dx", "dy", "rot"):
         np.testing.assert_allclose(port[key], leg[key], rtol=1e-9, atol=1e-300, err_msg=key)
     np.testing.assert_allclose(port["nodes"], leg["nodes"], rtol=1e-9, atol=1e-300)
@@ -178,9 +178,9 @@ def test_case3_rejects_bad_node_counts():
 
 
 @pytest.mark.parametrize("legacy_func,port_func", [
-    (legacy.case2_source, lambda **kw: case2_source(DEG[::20], **kw)),
-    (legacy.case2_cognate, lambda **kw: case2_cognate(DEG[::20], **kw)),
-    (legacy.case3_source, lambda **kw: case3_source(DEG[::20], **kw))])
+    (ali1977.case2_source, lambda **kw: case2_source(DEG[::20], **kw)),
+    (ali1977.case2_cognate, lambda **kw: case2_cognate(DEG[::20], **kw)),
+    (ali1977.case3_source, lambda **kw: case3_source(DEG[::20], **kw))])
 def test_cases23_typed_errors_from_both_engines(legacy_func, port_func):
     from linkrepro import AssemblyError
     with pytest.raises(AssemblyError):
@@ -195,4 +195,4 @@ def test_cases23_typed_errors_from_both_engines(legacy_func, port_func):
 
 def test_legacy_case3_needs_room_for_its_five_nodes():
     with pytest.raises(ValueError, match="nodes"):
-        legacy.case3_source(l2=8.0)
+        ali1977.case3_source(l2=8.0)

@@ -2,10 +2,10 @@
 import numpy as np
 import pytest
 
-from linkrepro.harness import cognate_search
+from linkrepro.harness.scenes.ali1977 import cognate_search
 from linkrepro.harness.published_tables import PublishedTable
-from linkrepro.port.ked_case2 import case2_cognate
-from linkrepro.port.ked_case3 import case3_cognate
+from linkrepro.port.ali1977.case2 import case2_cognate
+from linkrepro.port.ali1977.case3 import case3_cognate
 
 
 @pytest.mark.parametrize("case, reconstruction", [("II", case2_cognate), ("III", case3_cognate)])

@@ -13,7 +13,7 @@ How the two APIs map (what "the same input" means):
 - the angles: legacy steps its input angle in REAL*4 (``P2=P2+DSTEP``, DSTEP a REAL*4); the port
   takes the angles, ``listing_angles(step)`` builds the same ones (and is checked against
   legacy's ``deg``);
-- the port runs each listing's own bugs: ``PRINTED`` for Case I, ``ked_case2.LISTING`` /
+- the port runs each listing's own bugs: ``PRINTED`` for Case I, ``case2.LISTING`` /
   ``COGNATE_LISTING`` and ``ked_case3.LISTING`` / ``COGNATE_LISTING`` (PRINTED without the bugs
   that listing does not have), with ``alp`` and ``rpm`` given explicitly (the listings' 101 deg
   and 400 rpm are only defaults);
@@ -46,13 +46,13 @@ import pytest
 from hypothesis import event, given, settings
 from hypothesis import strategies as st
 
-from linkrepro import legacy
+from linkrepro.legacy import ali1977
 from linkrepro.errors import AssemblyError, SingularPositionError
-from linkrepro.port import ked_case2, ked_case3
-from linkrepro.port.fourbar import Lengths
-from linkrepro.port.ked_case1 import PRINTED, Section, cognate_case1, cognate_mechanics, source_case1, source_mechanics
+from linkrepro.port.ali1977 import case2, case3 as ked_case3
+from linkrepro.port.ali1977.fourbar import Lengths
+from linkrepro.port.ali1977.case1 import PRINTED, Section, cognate_case1, cognate_mechanics, source_case1, source_mechanics
 
-PI_22_7 = legacy.PI_PRINTED
+PI_22_7 = ali1977.PI_PRINTED
 
 
 def real4(x: float) -> float:
@@ -64,7 +64,7 @@ def listing_angles(step: float) -> np.ndarray:
     s = np.float32(step)
     p = -s
     out = []
-    for _ in range(legacy.angle_grid(step)):
+    for _ in range(ali1977.angle_grid(step)):
         p = np.float32(p + s)
         out.append(float(p))
     return np.array(out)
@@ -80,9 +80,9 @@ def _port_call(name: str, g: dict, deg: np.ndarray) -> dict:
     if name == "case1_cognate":
         return cognate_case1(deg, mass_lbf=g["weight"], quirks=PRINTED, **args)
     if name == "case2_source":
-        return ked_case2.case2_source(deg, density=g["weight"], quirks=ked_case2.LISTING, **args)
+        return case2.case2_source(deg, density=g["weight"], quirks=case2.LISTING, **args)
     if name == "case2_cognate":
-        return ked_case2.case2_cognate(deg, density=g["weight"], quirks=ked_case2.COGNATE_LISTING, **args)
+        return case2.case2_cognate(deg, density=g["weight"], quirks=case2.COGNATE_LISTING, **args)
     if name == "case3_source":
         return ked_case3.case3_source(deg, 5, density=g["weight"], quirks=ked_case3.LISTING, all_nodes=True, **args)
     return ked_case3.case3_cognate(deg, 5, density=g["weight"], quirks=ked_case3.COGNATE_LISTING, **args)
@@ -90,7 +90,7 @@ def _port_call(name: str, g: dict, deg: np.ndarray) -> dict:
 
 def _legacy_call(name: str, g: dict) -> dict:
     weight = "mass_lbf" if name.startswith("case1") else "density"
-    return getattr(legacy, name)(*g["lengths"], alp=g["alp"], rpm=g["rpm"], area=g["area"], modulus=g["modulus"],
+    return getattr(ali1977, name)(*g["lengths"], alp=g["alp"], rpm=g["rpm"], area=g["area"], modulus=g["modulus"],
                                  inertia=g["inertia"], step_deg=g["step"], **{weight: g["weight"]})
 
 
@@ -142,7 +142,7 @@ NUDGE = st.one_of(st.just(0.0), st.integers(-16, 16).map(lambda k: k * 2.0**-52)
 ALP = st.one_of(
     st.tuples(st.integers(-4, 7), UNIT).map(lambda qu: (qu[0] + qu[1]) * math.pi / 2),   # every quadrant
     st.sampled_from([0.0, math.pi / 2, math.pi, 1.5 * math.pi, 2 * math.pi, -math.pi / 2, -math.pi, PI_22_7,
-                     legacy.ALP_SOURCE_PRINTED, legacy.ALP_COGNATE_PRINTED]),
+                     ali1977.ALP_SOURCE_PRINTED, ali1977.ALP_COGNATE_PRINTED]),
     st.floats(-1e-6, 1e-6), st.floats(-1e-6, 1e-6).map(lambda d: math.pi + d))
 RPM = st.one_of(st.integers(-3000, 6000).map(float), st.floats(-6000.0, 6000.0),
                 st.sampled_from([0.0, 0.5, -0.5, 299.9, 300.0, 400.0, 2.0**31 - 1, -(2.0**31 - 1)]))
@@ -234,8 +234,8 @@ test_case3_source_over_the_input_space = _property_test("case3_source", 1.5)
 test_case3_cognate_over_the_input_space = _property_test("case3_cognate", 2)
 
 
-def _g(lengths, alp=PI_22_7 / 3, rpm=300.0, weight=real4(0.098), step=20.0, area=legacy.CA_PRINTED,
-       modulus=legacy.ME_PRINTED, inertia=legacy.MI_PRINTED):
+def _g(lengths, alp=PI_22_7 / 3, rpm=300.0, weight=real4(0.098), step=20.0, area=ali1977.CA_PRINTED,
+       modulus=ali1977.ME_PRINTED, inertia=ali1977.MI_PRINTED):
     return {"lengths": tuple(float(v) for v in lengths), "alp": alp, "rpm": rpm, "weight": weight,
             "area": area, "modulus": modulus, "inertia": inertia, "step": step}
 
@@ -287,7 +287,7 @@ def test_case3_rotation_and_nodes_are_the_listings_off_the_example():
     its tip rotation goes through node 2's block (D035): the port does both (it used even
     spacing, l2/5, and the tip block's own rotation)."""
     deg = listing_angles(20.0)
-    leg = legacy.case3_source(l2=13.0)
+    leg = ali1977.case3_source(l2=13.0)
     port = ked_case3.case3_source(deg, lengths=Lengths(10.0, 13.0, 30.0, 25.0, 30.0), all_nodes=True)
     assert np.array_equal(port["nodes"], leg["nodes"]) and np.array_equal(port["rot"], leg["rot"])
     uncoupled_tip = ked_case3.case3_source(deg, n=1, lengths=Lengths(10.0, 13.0, 30.0, 25.0, 30.0))
@@ -301,8 +301,8 @@ def test_section_values_are_the_listings_literals(area, modulus, inertia, densit
     """The port at any double x equals legacy at float32(x): the listing's CA, ME, MI, DNTY are
     REAL*4 literals assigned to DOUBLE variables, which is what the port models."""
     deg = listing_angles(30.0)
-    port = ked_case2.case2_source(deg, density=density, section=Section(area, modulus, inertia))
-    leg = legacy.case2_source(density=real4(density), area=real4(area), modulus=real4(modulus),
+    port = case2.case2_source(deg, density=density, section=Section(area, modulus, inertia))
+    leg = ali1977.case2_source(density=real4(density), area=real4(area), modulus=real4(modulus),
                               inertia=real4(inertia), step_deg=30.0)
     for key in port:
         assert np.array_equal(port[key], leg[key]), key
@@ -311,7 +311,7 @@ def test_section_values_are_the_listings_literals(area, modulus, inertia, densit
 # --- one error vocabulary ----------------------------------------------------------------
 
 PORT_FUNCTIONS = {"source_case1": source_case1, "cognate_case1": cognate_case1,
-                  "case2_source": ked_case2.case2_source, "case2_cognate": ked_case2.case2_cognate,
+                  "case2_source": case2.case2_source, "case2_cognate": case2.case2_cognate,
                   "case3_source": ked_case3.case3_source, "case3_cognate": ked_case3.case3_cognate,
                   "source_mechanics": source_mechanics, "cognate_mechanics": cognate_mechanics}
 
@@ -362,7 +362,7 @@ def _both(legacy_name: str, port_name: str, **bad):
     weight = "mass_lbf" if legacy_name.startswith("case1") else "density"
     leg_kw, port_kw = {}, {}
     lengths = dict(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0)
-    section = dict(area=legacy.CA_PRINTED, modulus=legacy.ME_PRINTED, inertia=legacy.MI_PRINTED)
+    section = dict(area=ali1977.CA_PRINTED, modulus=ali1977.ME_PRINTED, inertia=ali1977.MI_PRINTED)
     for key, value in bad.items():
         if key in lengths:
             lengths[key] = value
@@ -372,7 +372,7 @@ def _both(legacy_name: str, port_name: str, **bad):
             leg_kw[weight] = port_kw[weight] = value
         else:
             leg_kw[key] = port_kw[key] = value
-    calls = [lambda: getattr(legacy, legacy_name)(**lengths, **section, **leg_kw),
+    calls = [lambda: getattr(ali1977, legacy_name)(**lengths, **section, **leg_kw),
              lambda: PORT_FUNCTIONS[port_name](np.array([0.0, 20.0]), lengths=Lengths(*lengths.values()),
                                                section=Section(*section.values()), **port_kw)]
     return calls
@@ -408,13 +408,13 @@ def test_legacy_refuses_bad_steps(step, error):
     representable, and at most 200000 angles."""
     for program in PROGRAMS:
         with pytest.raises(error):
-            getattr(legacy, program)(step_deg=step)
+            getattr(ali1977, program)(step_deg=step)
 
 
 def test_case3_source_nodes_need_l2_above_8_in_both():
     for l2 in (8.0, 5.0):
         with pytest.raises(ValueError, match="l2"):
-            legacy.case3_source(l2=l2)
+            ali1977.case3_source(l2=l2)
         with pytest.raises(ValueError, match="l2"):
             ked_case3.case3_source(np.array([0.0]), lengths=Lengths(10.0, l2, 30.0, 25.0, 30.0))
 

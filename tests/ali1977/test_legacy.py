@@ -5,7 +5,8 @@ import sys
 import numpy as np
 import pytest
 
-from linkrepro import AssemblyError, LinkageError, legacy
+from linkrepro import AssemblyError, LinkageError
+from linkrepro.legacy import ali1977
 from linkrepro.harness.engines import run_printed
 from linkrepro.harness.published_tables import PublishedTable
 
@@ -18,8 +19,8 @@ def table1():
     return PublishedTable.load("ali1977_table1")
 
 
-@pytest.mark.parametrize("program,func", [("ali1977_case1_source", legacy.case1_source),
-                                          ("ali1977_case1_cognate", legacy.case1_cognate)])
+@pytest.mark.parametrize("program,func", [("ali1977_case1_source", ali1977.case1_source),
+                                          ("ali1977_case1_cognate", ali1977.case1_cognate)])
 def test_src_agrees_with_printed_program_to_its_format(program, func):
     printed = run_printed(program).set_index("deg")
     src = func(step_deg=10.0)
@@ -33,7 +34,7 @@ def test_rigid_columns_reproduced_to_every_printed_digit(table1):
     """Table I's rigid-mode X, Y (rows 0-340) are the cognate listing's XP, YP (statements
     30-31) with the listing's ALP=PI/3 and PI=3.142857143: every one of the 36 cells to the
     printed third decimal.  (Row 360 is a copy of row 0, D011.)"""
-    cog = legacy.case1_cognate(step_deg=20.0)
+    cog = ali1977.case1_cognate(step_deg=20.0)
     pub, half = table1.values, table1.half_unit
     rows = pub["input_deg"] < 360
     for column, quantity in (("rigid_x", "xp"), ("rigid_y", "yp")):
@@ -45,7 +46,7 @@ def test_deflection_columns_reproduced_where_not_misprinted(table1):
     """Source columns: the source listing as printed (400 rpm, ALP=1.762782545); cognate
     columns: the cognate listing (300 rpm).  Rows 0-340, all but the registered misprints
     (D020 row 160 source, D022 row 320 cognate dY, D024 row 260 source dY)."""
-    src, cog = legacy.case1_source(step_deg=20.0), legacy.case1_cognate(step_deg=20.0)
+    src, cog = ali1977.case1_source(step_deg=20.0), ali1977.case1_cognate(step_deg=20.0)
     pub, half = table1.values, table1.half_unit
     misprints = {(160, "src_dx"), (160, "src_dy"), (260, "src_dy"), (320, "cog_dy")}
     checked = 0
@@ -62,16 +63,16 @@ def test_deflection_columns_reproduced_where_not_misprinted(table1):
 
 def test_ground_link_too_long_raises_assembly_error_with_angle():
     with pytest.raises(AssemblyError) as info:
-        legacy.case1_source(l5=100.0)
+        ali1977.case1_source(l5=100.0)
     assert info.value.angle_deg == 0.0
 
 
 def test_cognate_that_cannot_close_raises_assembly_error():
     with pytest.raises(AssemblyError):
-        legacy.case1_cognate(l4=2.0)
+        ali1977.case1_cognate(l4=2.0)
 
 
-@pytest.mark.parametrize("func", [legacy.case1_source, legacy.case1_cognate])
+@pytest.mark.parametrize("func", [ali1977.case1_source, ali1977.case1_cognate])
 @pytest.mark.parametrize("bad", [dict(l1=0.0), dict(l3=-30.0), dict(l2=float("nan")), dict(area=0.0),
                                  dict(inertia=float("inf")), dict(rpm=float("nan")), dict(step_deg=0.0),
                                  dict(mass_lbf=-1.0)])
@@ -80,7 +81,7 @@ def test_bad_parameters_raise_value_error(func, bad):
         func(**bad)
 
 
-@pytest.mark.parametrize("func", [legacy.case1_source, legacy.case1_cognate])
+@pytest.mark.parametrize("func", [ali1977.case1_source, ali1977.case1_cognate])
 def test_zero_speed_needs_no_division_and_gives_no_deflection(func):
     """No Case I formula divides by the speed: at rest the inertia load, and with it the
     deflection, is zero (closed form)."""
@@ -91,9 +92,9 @@ def test_zero_speed_needs_no_division_and_gives_no_deflection(func):
 def test_linkage_errors_never_kill_the_interpreter():
     """A FORTRAN STOP in an extension ends Python with status 0; run the failing calls in a
     child interpreter and require it to reach the line after them."""
-    code = ("from linkrepro import legacy, LinkageError\n"
+    code = ("from linkrepro import LinkageError\nfrom linkrepro.legacy import ali1977\n"
             "for kw in (dict(l5=100.0), dict(l1=1.0, l3=1.0, l4=1.0, l5=2.0)):\n"
-            "    try:\n        legacy.case1_source(**kw)\n    except LinkageError as e:\n        print(type(e).__name__)\n"
+            "    try:\n        ali1977.case1_source(**kw)\n    except LinkageError as e:\n        print(type(e).__name__)\n"
             "print('ALIVE')\n")
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
     assert done.returncode == 0, done.stderr

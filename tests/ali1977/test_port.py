@@ -2,10 +2,10 @@
 import numpy as np
 import pytest
 
-from linkrepro import AssemblyError, SingularPositionError, legacy
-from linkrepro.port import CORRECTED, PRINTED, Lengths, Section, cognate_case1, source_case1
-from linkrepro.port.ked_case1 import (EXAMPLE, case1_deflection, cognate_mechanics, flexibility,
-                                      source_mechanics)
+from linkrepro import AssemblyError, SingularPositionError
+from linkrepro.legacy import ali1977
+from linkrepro.port.ali1977 import CORRECTED, PRINTED, Lengths, Section, cognate_case1, source_case1
+from linkrepro.port.ali1977.case1 import EXAMPLE, case1_deflection, cognate_mechanics, flexibility, source_mechanics
 
 DEG = np.arange(0.0, 361.0, 1.0)
 RPM = 300.0
@@ -13,8 +13,8 @@ RPM = 300.0
 
 def test_port_printed_equals_legacy_on_every_angle():
     """1e-9 relative on every quantity at every degree (it is in fact bit for bit)."""
-    pairs = [(source_case1(DEG, quirks=PRINTED), legacy.case1_source(step_deg=1.0)),
-             (cognate_case1(DEG, quirks=PRINTED), legacy.case1_cognate(step_deg=1.0))]
+    pairs = [(source_case1(DEG, quirks=PRINTED), ali1977.case1_source(step_deg=1.0)),
+             (cognate_case1(DEG, quirks=PRINTED), ali1977.case1_cognate(step_deg=1.0))]
     for port, leg in pairs:
         for key in port:
             np.testing.assert_allclose(port[key], leg[key], rtol=1e-9, atol=1e-300, err_msg=key)
@@ -148,7 +148,7 @@ def test_folded_linkage_raises_singular_position_in_both_engines(lengths):
     with pytest.raises(SingularPositionError) as from_port:
         source_case1(np.arange(0.0, 361.0, 20.0), lengths=Lengths(*lengths), quirks=PRINTED)
     with pytest.raises(SingularPositionError) as from_legacy:
-        legacy.case1_source(*lengths)
+        ali1977.case1_source(*lengths)
     assert from_port.value.angle_deg == from_legacy.value.angle_deg == 0.0
 
 

@@ -5,10 +5,10 @@ makes them."""
 import numpy as np
 import pytest
 
-from linkrepro.harness import case3_convergence
-from linkrepro.port import CORRECTED, PRINTED, ked_case3
-from linkrepro.port.ked_case1 import cognate_linkage, source_linkage
-from linkrepro.port.ked_case3 import LISTING, case3_linkage, case3_on_linkage, case3_source
+from linkrepro.harness.scenes.ali1977 import case3_convergence
+from linkrepro.port.ali1977 import CORRECTED, PRINTED, case3 as ked_case3
+from linkrepro.port.ali1977.case1 import cognate_linkage, source_linkage
+from linkrepro.port.ali1977.case3 import LISTING, case3_linkage, case3_on_linkage, case3_source
 from linkrepro.port.real4 import product
 
 DEG = np.arange(0.0, 361.0, 15.0)

@@ -2,7 +2,7 @@
 import numpy as np
 import pytest
 
-from linkrepro import legacy
+from linkrepro.legacy import ali1977
 
 RNG = np.random.default_rng(1977)
 
@@ -32,7 +32,7 @@ def storage(mode: int, n: int):
 
 def test_gmtra_is_numpy_transpose():
     a = RNG.normal(size=(8, 3)).astype(np.float32)
-    np.testing.assert_array_equal(legacy.gmtra(a), a.T)
+    np.testing.assert_array_equal(ali1977.gmtra(a), a.T)
 
 
 @pytest.mark.parametrize("msa", [0, 1, 2])
@@ -41,7 +41,7 @@ def test_mprd_every_storage_mode_matches_numpy(msa, msb):
     n = 5
     a_full, a_store = storage(msa, n)
     b_full, b_store = storage(msb, n)
-    r = legacy.mprd(a_store, b_store, n, n, n, msa, msb)
+    r = ali1977.mprd(a_store, b_store, n, n, n, msa, msb)
     expected = a_full.astype(np.float64) @ b_full.astype(np.float64)
     if msa == 2 and msb == 2:
         np.testing.assert_allclose(r, np.diag(expected), rtol=1e-6)
@@ -52,7 +52,7 @@ def test_mprd_every_storage_mode_matches_numpy(msa, msb):
 def test_mprd_rectangular_general():
     a = RNG.normal(size=(3, 8)).astype(np.float32)
     b = RNG.normal(size=(8, 2)).astype(np.float32)
-    r = legacy.mprd(general_storage(a), general_storage(b), 3, 8, 2)
+    r = ali1977.mprd(general_storage(a), general_storage(b), 3, 8, 2)
     np.testing.assert_allclose(r, a.astype(np.float64) @ b, rtol=1e-5, atol=1e-6)
 
 
@@ -63,16 +63,16 @@ def test_mprd_rectangular_general():
     (3, 3, 2, 3), (2, 3, 2, 0),    # diagonal: off-diagonal not stored
 ])
 def test_loc_subscripts(i, j, ms, expected):
-    assert legacy.loc(i, j, 4, 4, ms) == expected
+    assert ali1977.loc(i, j, 4, 4, ms) == expected
 
 
 @pytest.mark.parametrize("kwargs", [dict(n=0, m=1, l=1), dict(n=2, m=2, l=2, msa=3),
                                     dict(n=2, m=3, l=2, msa=1)])
 def test_mprd_bad_arguments_raise_value_error(kwargs):
     with pytest.raises(ValueError):
-        legacy.mprd(np.zeros(4), np.zeros(4), **kwargs)
+        ali1977.mprd(np.zeros(4), np.zeros(4), **kwargs)
 
 
 def test_mprd_wrong_storage_length_raises():
     with pytest.raises(ValueError, match="storage vectors"):
-        legacy.mprd(np.zeros(5), np.zeros(4), 2, 2, 2)
+        ali1977.mprd(np.zeros(5), np.zeros(4), 2, 2, 2)

@@ -1,8 +1,9 @@
-"""harness/identities.py: the tables' printed sums X_new = X + dX, Y_new = Y + dY."""
+"""harness/scenes/ali1977/sums.py: the K.E.D. tables' printed sums X_new = X + dX, Y_new = Y + dY."""
 import pandas as pd
 import pytest
 
-from linkrepro.harness import identities, register
+from linkrepro.harness import register
+from linkrepro.harness.scenes.ali1977 import sums
 from linkrepro.harness.published_tables import PublishedTable
 
 COLUMNS = ["input_deg", "rigid_x", "rigid_y", "src_dx", "src_dy", "src_xnew", "src_ynew",
@@ -18,7 +19,7 @@ def test_a_sum_within_the_half_units_is_consistent_and_beyond_them_a_misprint():
     # rounding (three half-units at most), two units off is not
     good = ["0", "1.000", "2.000", "0.001", "0.002", "1.002", "2.002", "0.000", "0.000", "1.000", "2.000"]
     bad = ["20", "1.000", "2.000", "0.001", "0.002", "1.003", "2.102", "0.000", "0.000", "1.000", "2.000"]
-    checks = identities.sum_checks("ali1977_table1", _table(good, bad)).set_index(["input_deg", "sum_column"])
+    checks = sums.sum_checks("ali1977_table1", _table(good, bad)).set_index(["input_deg", "sum_column"])
     assert checks.loc[(0, "src_xnew"), "verdict"] == "consistent"
     assert checks.loc[(20, "src_xnew"), "verdict"] == "misprint"        # 2 units off, bound 1.5
     assert checks.loc[(20, "src_ynew"), "gap"] == pytest.approx(0.1)
@@ -26,49 +27,19 @@ def test_a_sum_within_the_half_units_is_consistent_and_beyond_them_a_misprint():
 
 
 def test_table_three_prints_two_cognate_y_new_that_are_not_y_plus_dy():
-    checks = identities.sum_checks("ali1977_table3")
+    checks = sums.sum_checks("ali1977_table3")
     bad = checks[checks.verdict == "misprint"]
     cognate = bad[bad.sum_column == "cog_ynew"]
     assert sorted(cognate.input_deg) == [40, 280]
     assert list(cognate.gap.round(3)) == [0.2, 0.1]
 
 
-@pytest.mark.parametrize("table", sorted(identities.SUMS))
+@pytest.mark.parametrize("table", sorted(sums.SUMS))
 def test_every_misprint_the_sums_reveal_is_registered_as_one(table):
     """Each failed identity has one of its three cells claimed by a published-misprint entry."""
     entries = [e for e in register.load().values() if e.kind == "published-misprint"]
     scene = table.replace("_", "-")
-    for row in identities.sum_checks(table).query("verdict == 'misprint'").itertuples():
-        cells = (row.sum_column, *dict(identities.SUMS[table])[row.sum_column])
+    for row in sums.sum_checks(table).query("verdict == 'misprint'").itertuples():
+        cells = (row.sum_column, *dict(sums.SUMS[table])[row.sum_column])
         assert any(claim.covers(scene, int(row.input_deg), cell, "legacy")
                    for entry in entries for claim in entry.cells for cell in cells), (table, row)
-
-
-def test_section_5_3_numbers_the_published_tables_give_are_consistent():
-    """The quoted extremes and averages of Table 5.3 (0.7248 to 0.732, 0.728) are the table's own,
-    to one unit of the quoted digit; Figure 5.1's +4.59 % is not (5.2's printed 240 row gives 16.77)."""
-    checks = identities.percentage_checks().set_index(["table", "quantity"])
-    assert (checks.loc["5_3", "verdict"] == "consistent").all()
-    assert checks.loc[("5_2", "range_from"), "verdict"] == "differs"
-    row = PublishedTable.load("rahman1996_table5_2").values.set_index("crank_deg").loc[240]
-    assert checks.loc[("5_2", "range_from"), "from_table"] == pytest.approx(
-        (row["before"] - row["after"]) * 100 / row["before"])
-
-
-def test_a_quoted_digit_allows_one_unit():
-    assert identities._last_digit_unit("0.7248") == pytest.approx(1e-4)
-    assert identities._last_digit_unit("1.3") == pytest.approx(0.1)
-    assert identities._last_digit_unit("22") == 1.0
-
-
-def test_every_section_5_3_number_the_tables_do_not_give_is_registered():
-    checks = identities.percentage_checks(register.load())
-    bad = checks[checks["verdict"] == "differs"]
-    assert len(bad), "the check found nothing: section 5.3 quotes three extremes no table row gives (D058)"
-    assert (bad["register_ids"] != "").all(), bad[bad["register_ids"] == ""]
-
-
-def test_no_register_claim_on_section_5_3_names_a_consistent_number():
-    checks = identities.percentage_checks(register.load())
-    consistent = checks[checks["verdict"] == "consistent"]
-    assert (consistent["register_ids"] == "").all(), consistent[consistent["register_ids"] != ""]

@@ -54,12 +54,12 @@ def test_a_failed_newton_setting_is_inf_and_off_the_front():
 
 
 def test_clearing_caches_clears_the_port_geometry_cache():
-    from linkrepro.port import gsc_position
-    from linkrepro.port.gsc_data import GscInputs
-    gsc_position.constants(GscInputs(), 0.0)
-    assert gsc_position._geometry_constants.cache_info().currsize > 0
+    from linkrepro.port.rahman1991 import position
+    from linkrepro.port.rahman1991.data import GscInputs
+    position.constants(GscInputs(), 0.0)
+    assert position._geometry_constants.cache_info().currsize > 0
     bench.clear_port_caches()
-    assert gsc_position._geometry_constants.cache_info().currsize == 0
+    assert position._geometry_constants.cache_info().currsize == 0
 
 
 def test_quick_bench_writes_its_three_files(tmp_path, monkeypatch):

@@ -6,8 +6,8 @@ import pytest
 from linkrepro.harness import cli
 from linkrepro.harness.diff import diff_scene, quirk_effects
 from linkrepro.harness.published_tables import PublishedTable
-from linkrepro.harness.scenes import SCENES, get
-from linkrepro.port import PRINTED
+from linkrepro.harness.scenes import TABLES as SCENES, get
+from linkrepro.port.ali1977 import PRINTED
 
 
 @pytest.fixture(scope="module", params=[name for name in SCENES if name.startswith("ali1977")])
@@ -103,7 +103,7 @@ def test_appendix_scene_curves_and_speed_claim(tmp_path):
     """Appendix A: every produced curve from both engines, port equal to legacy, and the
     speed claim against closed form: inertia loads grow as the speed squared and the
     structure is linear, so the 400/300 rpm peak ratio is (4/3)^2 for every curve."""
-    from linkrepro.harness import appendix
+    from linkrepro.harness.scenes.ali1977 import appendix
     summary = appendix.run(tmp_path)
     assert summary["curves"] == 36 and summary["max_engine_gap"] < 1e-12
     assert len(list((tmp_path / appendix.NAME).glob("*.png"))) == 18

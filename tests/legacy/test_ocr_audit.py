@@ -5,7 +5,7 @@ import pytest
 
 from linkrepro.harness import ocr_audit
 
-SEEDS = Path(__file__).resolve().parents[2] / "shared" / "seeds"
+SEEDS = Path(__file__).resolve().parents[3] / "shared" / "seeds"
 
 
 def _listings(root):
@@ -16,7 +16,7 @@ def test_every_printed_listing_has_a_scan(root):
     assert _listings(root) == ocr_audit.listings(root)
 
 
-@pytest.mark.parametrize("listing", _listings(Path(__file__).resolve().parents[1]))
+@pytest.mark.parametrize("listing", _listings(Path(__file__).resolve().parents[2]))
 def test_every_difference_from_the_scan_is_a_registered_repair(root, register, listing):
     missing, stale = ocr_audit.unregistered(listing, root)
     assert not missing, (f"{listing}: {len(missing)} unregistered differences from the scan "
@@ -44,7 +44,7 @@ def test_a_changed_printed_token_is_found(root, tmp_path):
 
 
 @pytest.mark.skipif(not SEEDS.is_dir(), reason="the seeds (../shared/seeds) are not at hand")
-@pytest.mark.parametrize("listing", _listings(Path(__file__).resolve().parents[1]))
+@pytest.mark.parametrize("listing", _listings(Path(__file__).resolve().parents[2]))
 def test_the_scan_text_is_the_seed_verbatim(root, listing):
     stored = (root / "legacy" / "scan" / (Path(listing).stem + ".txt")).read_text()
     assert stored == ocr_audit.seed_excerpt(listing, SEEDS, root)

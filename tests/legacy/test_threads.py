@@ -11,7 +11,7 @@ from concurrent.futures import ThreadPoolExecutor
 import numpy as np
 import pytest
 
-from linkrepro import legacy
+from linkrepro.legacy import ali1977, rahman1996
 from linkrepro.errors import LinkageError, QPError
 
 
@@ -21,19 +21,19 @@ def _calls() -> list:
     rng = np.random.default_rng(7)
     calls = []
     for k in range(6):
-        calls.append((legacy.cssp, dict(a1=2.0 + 0.1 * k, a4=1.0 - 0.2 * k, alpha4_deg=240.0 + 5 * k)))
-        calls.append((legacy.case1_source, dict(l1=10.0 + k, step_deg=10.0)))
-        calls.append((legacy.case2_cognate, dict(l3=30.0 + k, step_deg=10.0)))
-        calls.append((legacy.case3_source, dict(rpm=300.0 + 50 * k, step_deg=10.0)))
-        calls.append((legacy.cssp, dict(a2=2.5)))                              # fails at 0 deg
+        calls.append((rahman1996.cssp, dict(a1=2.0 + 0.1 * k, a4=1.0 - 0.2 * k, alpha4_deg=240.0 + 5 * k)))
+        calls.append((ali1977.case1_source, dict(l1=10.0 + k, step_deg=10.0)))
+        calls.append((ali1977.case2_cognate, dict(l3=30.0 + k, step_deg=10.0)))
+        calls.append((ali1977.case3_source, dict(rpm=300.0 + 50 * k, step_deg=10.0)))
+        calls.append((rahman1996.cssp, dict(a2=2.5)))                              # fails at 0 deg
     for k in range(100):
         a = rng.normal(size=(6, 5))
-        calls.append((legacy.inverse, dict(s=a.T @ a)))
-        calls.append((legacy.inverse, dict(s=np.zeros((5, 5)))))             # singular: sets /INVERR/
+        calls.append((rahman1996.inverse, dict(s=a.T @ a)))
+        calls.append((rahman1996.inverse, dict(s=np.zeros((5, 5)))))             # singular: sets /INVERR/
         h = rng.normal(size=(3, 3))
-        calls.append((legacy.qprog, dict(h=h @ h.T + np.eye(3), g=rng.normal(size=3), a=np.eye(3),
+        calls.append((rahman1996.qprog, dict(h=h @ h.T + np.eye(3), g=rng.normal(size=3), a=np.eye(3),
                                          b=np.zeros(3), neq=0)))
-        calls.append((legacy.qprog, dict(h=np.eye(2), g=np.zeros(2), a=np.array([[1.0, 0.0], [1.0, 0.0]]),
+        calls.append((rahman1996.qprog, dict(h=np.eye(2), g=np.zeros(2), a=np.array([[1.0, 0.0], [1.0, 0.0]]),
                                          b=np.array([1.0, 2.0]), neq=2)))   # inconsistent: sets /QPSTAT/
     return calls
 
@@ -82,11 +82,11 @@ def test_a_status_is_read_by_the_call_that_set_it(eager_thread_switches, routine
     alternating a failing and a succeeding call must each see their own status.  (Without
     the lock this sees other threads' statuses: 4 to 37 wrong of 12,000, measured.)"""
     if routine == "inverse":
-        calls = [lambda: legacy.inverse(2.0 * np.eye(5)), lambda: legacy.inverse(np.zeros((5, 5)))]
+        calls = [lambda: rahman1996.inverse(2.0 * np.eye(5)), lambda: rahman1996.inverse(np.zeros((5, 5)))]
     else:
         rows = np.array([[1.0, 0.0], [1.0, 0.0]])                     # x1 = 1 and x1 = 2: inconsistent
-        calls = [lambda: legacy.qprog(np.eye(2), np.zeros(2), rows[:1], np.array([1.0]), 1),
-                 lambda: legacy.qprog(np.eye(2), np.zeros(2), rows, np.array([1.0, 2.0]), 2)]
+        calls = [lambda: rahman1996.qprog(np.eye(2), np.zeros(2), rows[:1], np.array([1.0]), 1),
+                 lambda: rahman1996.qprog(np.eye(2), np.zeros(2), rows, np.array([1.0, 2.0]), 2)]
     expected = [_run((call, {}))[0] for call in calls]
     assert expected[0] == "result" and expected[1] != "result"
 

@@ -4,9 +4,9 @@ import re
 
 import pytest
 
-from linkrepro.port import Quirks
-from linkrepro.port.cssp_quirks import CsspQuirks
-from linkrepro.port.gsc_quirks import GscQuirks
+from linkrepro.port.ali1977 import Quirks
+from linkrepro.port.rahman1996.quirks import CsspQuirks
+from linkrepro.port.rahman1991.quirks import GscQuirks
 
 TAG = re.compile(r"!\s*(D\d{3})\s*$")
 PROGRAMS = ["ali1977_case1_source.f", "ali1977_case1_cognate.f", "ali1977_case2_source.f",

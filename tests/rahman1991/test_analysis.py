@@ -6,13 +6,13 @@ import pandas as pd
 import pytest
 
 from linkrepro.errors import AssemblyError, ConvergenceError, SingularPositionError
-from linkrepro.harness import near_singular, planar_reference
+from linkrepro.harness.scenes.rahman1991 import near_singular, planar_reference
 from linkrepro.harness.published_tables import PUBLISHED_DIR
-from linkrepro.port import gsc, gsc_forces, gsc_position
-from linkrepro.port.cssp_data import CsspInputs
-from linkrepro.port.cssp_mechanics import kinematics
-from linkrepro.port.gsc_data import GscInputs, MassModel
-from linkrepro.port.gsc_quirks import GSC_CORRECTED, GSC_PRINTED
+from linkrepro.port.rahman1991 import analysis as gsc, forces as gsc_forces, position
+from linkrepro.port.rahman1996.data import CsspInputs
+from linkrepro.port.rahman1996.mechanics import kinematics
+from linkrepro.port.rahman1991.data import GscInputs, MassModel
+from linkrepro.port.rahman1991.quirks import GSC_CORRECTED, GSC_PRINTED
 
 DEG = np.arange(0.5, 360.0, 1.0)          # half degrees: no grid point on the a4 = 0 dead centres
 PRINTED_FIXED = GSC_PRINTED.without("com_beyond_joint", "joint_force_signs")
@@ -114,7 +114,7 @@ def test_the_iterative_correction_69h_69k_never_changes_2F2i():
     """(69i), (69j) satisfy (62a) identically, so the loop of (69k) exits at once."""
     inputs = GscInputs(a4=30.0, s1=3.5)
     th = np.radians(DEG)
-    run = gsc_position.positions(inputs, th)
+    run = position.positions(inputs, th)
     q_d, q_dd = gsc.printed_rates(run.q, inputs, th, True)
     with np.errstate(all="ignore"):
         out = gsc_forces.printed_forces(inputs, th, run.q, q_d, q_dd)
@@ -141,24 +141,24 @@ def test_non_convergence_is_told_apart_from_non_assembly():
     """a4 = 0, S1 = 9: the mechanism assembles at every angle; the printed Newton fails."""
     inputs = GscInputs(a4=0.0, s1=9.0)
     th = np.radians(gsc.CRANK_DEG)
-    assert gsc_position.assembles(inputs, th, 9.0).all()
-    run = gsc_position.positions(inputs, th)
-    assert (run.status == gsc_position.NOT_CONVERGED).any()
-    assert not (run.status == gsc_position.CANNOT_ASSEMBLE).any()
+    assert position.assembles(inputs, th, 9.0).all()
+    run = position.positions(inputs, th)
+    assert (run.status == position.NOT_CONVERGED).any()
+    assert not (run.status == position.CANNOT_ASSEMBLE).any()
     frame = gsc.analyse(GscInputs(a4=40.0), gsc.CRANK_DEG, GSC_PRINTED)
-    assert (frame.status == gsc_position.CANNOT_ASSEMBLE).any() and frame[~frame.converged].F1i.isna().all()
+    assert (frame.status == position.CANNOT_ASSEMBLE).any() and frame[~frame.converged].F1i.isna().all()
 
 
 def test_a4_30_converges_up_to_s1_9_as_the_thesis_says(claims):
     s1 = float(claims.loc["converge_a4_30", "value"])
-    run = gsc_position.positions(GscInputs(a4=30.0, s1=s1), np.radians(gsc.CRANK_DEG), stop_at_failure=True)
+    run = position.positions(GscInputs(a4=30.0, s1=s1), np.radians(gsc.CRANK_DEG), stop_at_failure=True)
     assert run.converged.all()
 
 
 def test_printed_positions_close_only_in_the_plane():
     th = np.radians(DEG)
-    planar = gsc_position.positions(GscInputs(a4=10.0), th)
-    spatial = gsc_position.positions(GscInputs(a4=30.0, s1=3.5), th)
+    planar = position.positions(GscInputs(a4=10.0), th)
+    spatial = position.positions(GscInputs(a4=30.0, s1=3.5), th)
     assert np.nanmax(planar.closure) < 1e-5 and np.nanmin(spatial.closure) > 1e-3
 
 
@@ -196,14 +196,14 @@ def test_printed_rates_in_the_plane_equal_the_exact_rates():
 
 def test_scene_csv_has_the_issue_columns_and_claims_table(tmp_path):
     """port.csv's columns as specified; claims measured on a small grid."""
-    from linkrepro.harness import rahman1991
+    from linkrepro.harness.scenes.rahman1991 import example
     spec = ("a4, alpha4_deg, s1, crank_deg, converged, s4, theta2, eta2, theta3, eta3, F1i, F1j, F1k, T1i, "
             "T1j, T1k, F2i, F2j, F2k, F3i, F3j, F3k, F4i, F4j, F4k, T4i, T4j, T4k").split(", ")
     assert gsc.COLUMNS == spec
     frames = {name: gsc.sweep(q, a4=(0.0, 30.0), alpha4_deg=(270.0,), s1=(0.0, 3.5))
-              for name, q in rahman1991.ENGINES.items()}
+              for name, q in example.ENGINES.items()}
     assert all(len(f) == 4 * 361 and f.converged.dtype == bool for f in frames.values())
-    table = rahman1991.measure_claims(frames, pd.DataFrame(columns=["claim", "engine", "measured", "verdict", "what"]))
+    table = example.measure_claims(frames, pd.DataFrame(columns=["claim", "engine", "measured", "verdict", "what"]))
     verdict = table.set_index(["claim", "engine"]).verdict
     assert verdict["f2j_constant", "port_printed"] == verdict["f2j_constant", "port_corrected"] == "reproduced"
     assert verdict["planar_complex", "port_corrected"] == "reproduced"
@@ -214,5 +214,5 @@ def test_scene_csv_has_the_issue_columns_and_claims_table(tmp_path):
 def test_a4_20_converges_from_alpha4_232_to_310_as_the_thesis_says(claims):
     lo, hi = (float(v) for v in claims.loc["converge_alpha4", "value"].split())
     configs = [GscInputs(a4=20.0, alpha4_deg=lo), GscInputs(a4=20.0, alpha4_deg=hi)]
-    runs = gsc_position.positions_batch(configs, np.radians(gsc.CRANK_DEG), stop_at_failure=True)
+    runs = position.positions_batch(configs, np.radians(gsc.CRANK_DEG), stop_at_failure=True)
     assert all(run.converged.all() for run in runs)

@@ -5,9 +5,10 @@ against the single-position Newton."""
 import numpy as np
 import pytest
 
-from linkrepro.port import gsc_position, spatial_newton
-from linkrepro.port.cssp_listing import loop_operators
-from linkrepro.port.gsc_data import GscInputs
+from linkrepro.port.rahman1991 import position as gsc_position
+from linkrepro.port.slider_crank import newton as spatial_newton
+from linkrepro.port.rahman1996.listing import loop_operators
+from linkrepro.port.rahman1991.data import GscInputs
 
 
 def _numpy_residual(theta1, q, c):

@@ -7,7 +7,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from linkrepro.harness import arithmetic as A
+from linkrepro.harness.scenes.rahman1996 import arithmetic as A
 from linkrepro.harness.readings import CompilerError
 
 needs_gfortran = pytest.mark.skipif(shutil.which("gfortran") is None, reason="needs gfortran")
@@ -37,7 +37,7 @@ def test_reference_flags_are_the_legacy_builds(root):
 
 @needs_gfortran
 def test_reference_is_the_legacy_engine_bit_for_bit(measured):
-    from linkrepro.harness.scenes_rahman1996 import legacy_tables
+    from linkrepro.harness.scenes.rahman1996.tables import legacy_tables
     m, _, _ = measured
     for table, frame in legacy_tables().items():
         for col in ("before", "after"):
@@ -49,7 +49,7 @@ def test_reference_counts_are_the_harness_diff(measured, register):
     """Cells at the printed digit under the reference = the harness's `match` cells of legacy."""
     from linkrepro.harness.diff import diff_scene
     from linkrepro.harness.published_tables import PublishedTable
-    from linkrepro.harness.scenes_rahman1996 import RAHMAN1996_SCENES
+    from linkrepro.harness.scenes.rahman1996.tables import TABLES as RAHMAN1996_SCENES
     _, _, counts = measured
     ref = counts[counts["variant"] == "reference"].set_index("table")
     total = 0

@@ -17,14 +17,14 @@ import pytest
 from hypothesis import event, example, given, settings
 from hypothesis import strategies as st
 
-from linkrepro import legacy
+from linkrepro.legacy import rahman1996
 from linkrepro.errors import LinkageError, QPError, SingularPositionError
-from linkrepro.harness.differential import one_ulp_up
-from linkrepro.port.cssp import CSSP_PRINTED, CRANK_DEG, _listing_motions, balance
-from linkrepro.port.cssp_data import Constants, CsspInputs
-from linkrepro.port.cssp_listing import printed_inverse
-from linkrepro.port.gsc_data import GscInputs
-from linkrepro.port.gsc_position import BUILD_1996, NEWTON, positions
+from linkrepro.harness.scenes.rahman1996.differential import one_ulp_up
+from linkrepro.port.rahman1996.balance import CSSP_PRINTED, CRANK_DEG, _listing_motions, balance
+from linkrepro.port.rahman1996.data import Constants, CsspInputs
+from linkrepro.port.rahman1996.listing import printed_inverse
+from linkrepro.port.rahman1991.data import GscInputs
+from linkrepro.port.rahman1991.position import BUILD_1996, NEWTON, positions
 
 #: tables: port with the listing's bugs against legacy, relative to each column's largest |value|
 TABLE_RTOL = 1e-12
@@ -67,7 +67,7 @@ def geometries(draw):
 
 def assert_port_equals_legacy(g: dict) -> tuple:
     """The property on one geometry; returns legacy's (result, error)."""
-    leg, leg_err = outcome(lambda: legacy.cssp(**g))
+    leg, leg_err = outcome(lambda: rahman1996.cssp(**g))
     port, port_err = outcome(lambda: balance(CsspInputs(**g), CSSP_PRINTED))
     assert port_err == leg_err, f"{g}: legacy {leg_err}, port {port_err}"
     if leg is None:
@@ -135,7 +135,7 @@ def inverse_inputs(draw):
 def test_printed_inverse_equals_legacy(s):
     """Same outcome (SingularPositionError where the listing prints MATRIX IS SINGULAR) and the
     same bits, on every path of the routine."""
-    leg, leg_err = outcome(lambda: legacy.inverse(s))
+    leg, leg_err = outcome(lambda: rahman1996.inverse(s))
     port, port_err = outcome(lambda: printed_inverse(s))
     assert port_err == leg_err
     event("singular" if leg_err else "inverted")
@@ -145,7 +145,7 @@ def test_printed_inverse_equals_legacy(s):
 
 @pytest.mark.parametrize("bad", [np.full((5, 5), np.nan), np.eye(4), np.array([[1.0, np.inf]])])
 def test_inverse_refuses_bad_matrices_alike(bad):
-    for inverse in (legacy.inverse, printed_inverse):
+    for inverse in (rahman1996.inverse, printed_inverse):
         with pytest.raises(ValueError):
             inverse(bad)
 
@@ -165,7 +165,7 @@ def assert_1991_method_is_the_build(inputs: GscInputs) -> str:
     same crank angle.  (The build can also fail later, in its rates, second pass or QP: then the
     1991 sweep either stops at the build's angle or runs through.)"""
     g = dict(a1=inputs.a1, a2=inputs.a2, a4=inputs.a4, alpha4_deg=inputs.alpha4_deg, s1=inputs.s1, rpm=inputs.rpm)
-    leg, leg_err = outcome(lambda: legacy.cssp(**g))
+    leg, leg_err = outcome(lambda: rahman1996.cssp(**g))
     pi = Constants.of(CsspInputs(**g), True).pi
     run = positions(inputs, CRANK_DEG * (pi / 180.0), use_dfp=False, stop_at_failure=True, setup=BUILD_1996)
     solved = run.status == NEWTON

@@ -13,7 +13,7 @@ none, feasible with some bounds tight, redundant (repeated, scaled and summed ro
 rows with exactly dependent sets, infeasible (a contradicting pair), random; m up to 3n+2 (more
 than n), neq from 0 to m (neq = n included).  And the CSSP's own balancing problem: its
 constraint rows QP_ROWS, QP_EQUALITIES, the DATA b bounds as QPROG gets them (REAL*4), and the
-Hessians legacy.cssp computes over the issue's geometry domain, also with g and the bounds
+Hessians rahman1996.cssp computes over the issue's geometry domain, also with g and the bounds
 perturbed (which makes some problems infeasible).
 
 Two faults of our FORTRAN stand-in found here are mended in both (register D050): the DIAG
@@ -32,11 +32,11 @@ from hypothesis import assume, event, example, given, settings
 from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
 
-from linkrepro import legacy
+from linkrepro.legacy import rahman1996
 from linkrepro.errors import LinkageError, QPError
-from linkrepro.port import cssp as port_cssp
-from linkrepro.port import qprog as port_qprog
-from linkrepro.port.cssp_data import QP_BOUNDS, QP_EQUALITIES, QP_ROWS
+from linkrepro.port.rahman1996 import balance as port_cssp
+from linkrepro.port.rahman1996 import qprog as port_qprog
+from linkrepro.port.rahman1996.data import QP_BOUNDS, QP_EQUALITIES, QP_ROWS
 
 #: DATA b as the listing's QPROG receives it (REAL*4)
 CSSP_BOUNDS = np.asarray(QP_BOUNDS, dtype=np.float32).astype(np.float64)
@@ -61,7 +61,7 @@ def outcome(fn, *args):
 def assert_same(h, g, a=None, b=None, neq=0) -> str:
     """The property on one problem; returns the outcome's name (for hypothesis' statistics)."""
     ours = outcome(port_qprog.qprog, h, g, a, b, neq)
-    theirs = outcome(legacy.qprog, h, g, a, b, neq)
+    theirs = outcome(rahman1996.qprog, h, g, a, b, neq)
     if isinstance(ours, tuple) or isinstance(theirs, tuple):
         assert isinstance(ours, tuple) and isinstance(theirs, tuple), (ours, theirs)
         assert ours[0] == theirs[0], (ours, theirs)
@@ -200,7 +200,7 @@ def cssp_geometries(draw):
 
 def cssp_hessian(geometry) -> np.ndarray:
     try:
-        return legacy.cssp(**geometry)["hessian"]
+        return rahman1996.cssp(**geometry)["hessian"]
     except (LinkageError, QPError):
         assume(False)
 
@@ -211,7 +211,7 @@ def cssp_hessian(geometry) -> np.ndarray:
 @example(geometry=HARD_GEOMETRY, variant="as printed", data=None)
 @example(geometry={}, variant="as printed", data=None)
 def test_port_equals_legacy_on_the_cssp_qp(geometry, variant, data):
-    """The balancing QP with the Hessians legacy.cssp computes (REAL*4, max|H| ~ 1e4..1e8,
+    """The balancing QP with the Hessians rahman1996.cssp computes (REAL*4, max|H| ~ 1e4..1e8,
     singular: D057), with g and the bounds perturbed in some examples."""
     h = cssp_hessian(geometry)
     g, bounds = np.zeros(9), CSSP_BOUNDS.copy()
@@ -231,14 +231,14 @@ def test_solve_qp_solves_where_quadprog_failed_and_equals_legacy():
     max|H| ~ 4e7 (norm ~1e8), DIAG ~ 0.58.  The port's solve_qp now solves it, equal to the
     legacy QPROG bit for bit; the answer satisfies the KKT conditions of
     min x'(H + DIAG I)x/2 computed here; and the port's whole run (balance, which raised
-    QPError there) gives legacy.cssp's Hessian and Table 5.1 masses (REAL*4) exactly."""
-    run = legacy.cssp(**HARD_GEOMETRY)
+    QPError there) gives rahman1996.cssp's Hessian and Table 5.1 masses (REAL*4) exactly."""
+    run = rahman1996.cssp(**HARD_GEOMETRY)
     h = run["hessian"]
     assert 1e7 < np.abs(h).max() < 1e8
     x, diag = port_cssp.solve_qp(h, bounds=CSSP_BOUNDS)
     with pytest.raises(ValueError, match="inconsistent"):
         quadprog.solve_qp(h + diag * np.eye(9), np.zeros(9), QP_ROWS.T.copy(), CSSP_BOUNDS, QP_EQUALITIES)
-    ref = legacy.qprog(h, np.zeros(9), QP_ROWS, CSSP_BOUNDS, QP_EQUALITIES)
+    ref = rahman1996.qprog(h, np.zeros(9), QP_ROWS, CSSP_BOUNDS, QP_EQUALITIES)
     assert np.array_equal(bits(x), bits(ref["sol"])) and diag == ref["diag"] > 0
     # KKT of min x'(H + DIAG I)x/2, computed here: feasibility, stationarity (H + DIAG I)x =
     # A_act' lambda, lambda >= 0 on the bounds.  Rounding is bounded by eps * cond(H + DIAG I)
@@ -273,7 +273,7 @@ def test_where_the_diag_rule_stalled_both_return_alike():
     """H = diag(-1.3, 5.3): DIAG = fl(1.3 + TINY) rounds down, so the first pivot stays below
     TINY and DIAG + (TINY - PIVOT) == DIAG: statement 100 repeated forever.  Now DIAG takes the
     next number up, in the FORTRAN and the port; with -2.9 (rounding up) nothing changed."""
-    code = "import numpy as np; from linkrepro import legacy; print(legacy.qprog(np.diag([-1.3, 5.3]), np.ones(2))['diag'])"
+    code = "import numpy as np; from linkrepro.legacy import rahman1996; print(rahman1996.qprog(np.diag([-1.3, 5.3]), np.ones(2))['diag'])"
     assert float(in_child(code, timeout=20.0)) > 1.3
     for h11 in (-1.3, -2.9):
         assert_same(np.diag([h11, 5.3]), np.ones(2))
@@ -293,15 +293,15 @@ def test_at_60_variables_both_report_the_inconsistency():
     assert linprog(np.zeros(n), A_ub=-a, b_ub=-b, bounds=[(None, None)] * n).status == 2   # infeasible
     with pytest.raises(QPError, match="inconsistent"):
         port_qprog.qprog(h, g, a, b)
-    code = ("import numpy as np; from linkrepro import legacy; from linkrepro.errors import QPError\n"
+    code = ("import numpy as np; from linkrepro.legacy import rahman1996; from linkrepro.errors import QPError\n"
             "rng = np.random.default_rng(1); root = rng.standard_normal((60, 60))\n"
             "h, g = root @ root.T + 60 * np.eye(60), rng.standard_normal(60)\n"
             "a, b = rng.standard_normal((194, 60)), rng.standard_normal(194) + 3.0\n"
-            "try:\n    legacy.qprog(h, g, a, b)\nexcept QPError as exc:\n    print(exc)")
+            "try:\n    rahman1996.qprog(h, g, a, b)\nexcept QPError as exc:\n    print(exc)")
     assert "inconsistent" in in_child(code)
 
 
-@pytest.mark.parametrize("qprog", [port_qprog.qprog, legacy.qprog], ids=["port", "legacy"])
+@pytest.mark.parametrize("qprog", [port_qprog.qprog, rahman1996.qprog], ids=["port", "legacy"])
 def test_both_refuse_what_dqprog_would_return_silently(qprog):
     """Non-finite a or b: DQPROG's comparisons with NaN are false, so it would ignore the
     constraint and return a result: ValueError.  An overflowing problem: DQPROG returns a NaN
@@ -330,4 +330,4 @@ def test_bad_arguments_raise_value_error_in_both(args):
     with pytest.raises(ValueError):
         port_qprog.qprog(*args)
     with pytest.raises(ValueError):
-        legacy.qprog(*args)
+        rahman1996.qprog(*args)

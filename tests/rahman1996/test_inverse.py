@@ -18,7 +18,7 @@ import numpy as np
 import pytest
 
 from linkrepro.errors import SingularPositionError
-from linkrepro.legacy import inverse
+from linkrepro.legacy.rahman1996 import inverse
 
 #: symmetric, diagonally dominant base matrix of the driver cases (/tmp/cssp_sub_notes.md)
 S0 = np.array([[4.0, 1, 0, 0, 1], [1, 5, 2, 0, 0], [0, 2, 6, 1, 0], [0, 0, 1, 7, 2], [1, 0, 0, 2, 8]])
@@ -144,7 +144,7 @@ def test_s_is_not_modified(order):
 SINGULAR_CHILD = """
 import numpy as np
 from linkrepro.errors import SingularPositionError
-from linkrepro.legacy import inverse
+from linkrepro.legacy.rahman1996 import inverse
 s = np.eye(5)
 s[:, 0] = 0.0
 try:

@@ -6,10 +6,10 @@ import sys
 import numpy as np
 import pytest
 
-from linkrepro import legacy
+from linkrepro.legacy import rahman1996
 from linkrepro.errors import ConvergenceError
 from linkrepro.harness.published_tables import PublishedTable
-from linkrepro.harness.scenes_rahman1996 import printed_run
+from linkrepro.harness.scenes.rahman1996.tables import printed_run
 
 SERIES = ["5_2", "5_3", "5_4", "5_5", "5_6", "5_7"]
 #: published cells registered as one-digit misprints (D058): (table, column, crank_deg)
@@ -19,7 +19,7 @@ MISPRINTS = {("5_2", "before", 240), ("5_4", "before", 240), ("5_4", "after", 90
 
 @pytest.fixture(scope="module")
 def run():
-    return legacy.cssp()
+    return rahman1996.cssp()
 
 
 @pytest.mark.parametrize("k, table", list(enumerate(SERIES)))
@@ -56,7 +56,7 @@ def test_table_5_1_before_and_the_implied_split(run):
     within(run["inertia"][rod, 1], "after", rod)
     split = run["solution"].copy()
     split[:3] = [0.003688 - 2 * 0.001168, 0.001168, 0.001168]
-    forced = legacy.cssp(solution=split)
+    forced = rahman1996.cssp(solution=split)
     crank = slice(0, 3)
     np.testing.assert_allclose(forced["inertia"][crank, 1], pub["after"][crank], rtol=2e-6)
 
@@ -83,8 +83,8 @@ def test_legacy_equals_the_printed_program(run):
 
 def test_every_call_starts_from_a_fresh_program(run):
     """Static storage is reset at entry (D054): a call after another geometry is bit-identical."""
-    legacy.cssp(a4=1.5, alpha4_deg=260.0)
-    again = legacy.cssp()
+    rahman1996.cssp(a4=1.5, alpha4_deg=260.0)
+    again = rahman1996.cssp()
     np.testing.assert_array_equal(again["table"], run["table"])
     np.testing.assert_array_equal(again["solution"], run["solution"])
     np.testing.assert_array_equal(again["hessian"], run["hessian"])       # f3x(8) reset too
@@ -93,21 +93,21 @@ def test_every_call_starts_from_a_fresh_program(run):
 @pytest.mark.parametrize("kw", [dict(a2=2.5), dict(s1=6.0)])
 def test_a_linkage_that_cannot_close_is_a_typed_error(kw):
     with pytest.raises(ConvergenceError) as info:
-        legacy.cssp(**kw)
+        rahman1996.cssp(**kw)
     assert info.value.angle_deg == 0.0
 
 
 @pytest.mark.parametrize("kw", [dict(a1=0.0), dict(rpm=float("nan")), dict(solution=[1.0, 2.0])])
 def test_bad_parameters_are_value_errors(kw):
     with pytest.raises(ValueError):
-        legacy.cssp(**kw)
+        rahman1996.cssp(**kw)
 
 
 def test_failures_never_kill_the_interpreter():
     """The listing STOPs on a Newton failure and on a singular INVERSE; here they are statuses."""
-    code = ("from linkrepro import legacy, LinkageError\n"
+    code = ("from linkrepro import LinkageError\nfrom linkrepro.legacy import rahman1996\n"
             "import numpy as np\n"
-            "for call in (lambda: legacy.cssp(a2=2.5), lambda: legacy.inverse(np.zeros((5, 5)))):\n"
+            "for call in (lambda: rahman1996.cssp(a2=2.5), lambda: rahman1996.inverse(np.zeros((5, 5)))):\n"
             "    try:\n        call()\n    except LinkageError as e:\n        print(type(e).__name__)\n"
             "print('ALIVE')\n")
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)

@@ -12,13 +12,13 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from linkrepro import legacy
-from linkrepro.harness import rahman1996_figures
+from linkrepro.legacy import rahman1996
+from linkrepro.harness.scenes.rahman1996 import figures
 from linkrepro.harness.published_tables import PublishedTable
-from linkrepro.port import cssp
-from linkrepro.port.cssp import CsspInputs, balance, link_masses
-from linkrepro.port.cssp_data import MASS_DECREASE, QP_BOUNDS, Constants, qp_constraints
-from linkrepro.port.cssp_quirks import CSSP_CORRECTED, CSSP_PRINTED
+from linkrepro.port.rahman1996 import balance as cssp
+from linkrepro.port.rahman1996.balance import CsspInputs, balance, link_masses
+from linkrepro.port.rahman1996.data import MASS_DECREASE, QP_BOUNDS, Constants, qp_constraints
+from linkrepro.port.rahman1996.quirks import CSSP_CORRECTED, CSSP_PRINTED
 
 #: the series tables in the order of the 37 x 12 ``table`` (before, after pairs)
 SERIES = ("5_2", "5_3", "5_4", "5_5", "5_6", "5_7")
@@ -26,7 +26,7 @@ SERIES = ("5_2", "5_3", "5_4", "5_5", "5_6", "5_7")
 
 @pytest.fixture(scope="module")
 def run():
-    return legacy.cssp()
+    return rahman1996.cssp()
 
 
 @pytest.fixture(scope="module")
@@ -73,7 +73,7 @@ def test_published_after_columns_need_the_lost_mass(run, consts):
     kept[3] = consts.masses[0] - kept[0:3].sum()
     kept[7] = consts.masses[1] - kept[4:7].sum()
     np.testing.assert_allclose(link_masses(kept)[:2], consts.masses[:2], rtol=1e-7)
-    restored = legacy.cssp(solution=kept)["table"]
+    restored = rahman1996.cssp(solution=kept)["table"]
     for k, table in enumerate(SERIES[1:], start=1):
         published = published_after(table)
         assert median_rel(run["table"][:, 2 * k + 1], published) < 1e-7, table
@@ -87,7 +87,7 @@ def test_section_5_3_improvements_are_mostly_the_lost_mass(run):
     kept = balance(quirks=CSSP_PRINTED.only("qp_cg_masses_free", False))
     np.testing.assert_allclose(link_masses(kept["solution"])[:2],
                                link_masses(Constants.of(CsspInputs(), True).point_masses)[:2], rtol=1e-4)
-    quoted = pd.read_csv(rahman1996_figures.PUBLISHED_DIR / "rahman1996_section5_3.csv", comment="#",
+    quoted = pd.read_csv(figures.PUBLISHED_DIR / "rahman1996_section5_3.csv", comment="#",
                          dtype={"table": str}).set_index("table")["average"]
     for table in ("5_3", "5_7"):
         k = SERIES.index(table)
@@ -100,10 +100,10 @@ def test_kept_mass_qp_port_equals_legacy(run, consts):
     FORTRAN QPROG, and the legacy run at that answer (D055) equal the port with the switch off."""
     port = balance(quirks=CSSP_PRINTED.only("qp_cg_masses_free", False))
     rows, bounds, equalities = qp_constraints(consts, False, True, True)
-    ref = legacy.qprog(run["hessian"], np.zeros(9), rows, bounds, equalities)["sol"]
+    ref = rahman1996.qprog(run["hessian"], np.zeros(9), rows, bounds, equalities)["sol"]
     np.testing.assert_allclose(port["solution"], ref, rtol=1e-7)
     np.testing.assert_allclose(port["solution"][[3, 7]], consts.point_masses[[3, 7]], rtol=1e-7)
-    table = legacy.cssp(solution=port["solution"])["table"]
+    table = rahman1996.cssp(solution=port["solution"])["table"]
     assert np.max(np.abs(port["table"] - table) / np.abs(table).max(axis=0)) < 1e-12
 
 
@@ -121,7 +121,7 @@ def test_table_5_1_implies_the_pair_sums_and_cannot_see_the_centre_masses(run, c
         assert np.all(pairs >= consts.qp_bounds[3 + 4 * link] * (1 - 2e-5))
     raised = run["solution"].copy()
     raised[[3, 7]] = consts.point_masses[[3, 7]]
-    np.testing.assert_array_equal(legacy.cssp(solution=raised)["inertia"], run["inertia"])
+    np.testing.assert_array_equal(rahman1996.cssp(solution=raised)["inertia"], run["inertia"])
 
 
 def test_slider_mass_is_the_rounded_literal_not_m3(run, consts):
@@ -134,7 +134,7 @@ def test_slider_mass_is_the_rounded_literal_not_m3(run, consts):
     assert abs(x9 / m3 - 1.0) > 100 * np.finfo(np.float32).eps
     with_m3 = run["solution"].copy()
     with_m3[8] = m3
-    table = legacy.cssp(solution=with_m3)["table"]
+    table = rahman1996.cssp(solution=with_m3)["table"]
     for k, name in enumerate(SERIES[1:], start=1):
         published = published_after(name)
         assert median_rel(table[:, 2 * k + 1], published) > 10 * median_rel(run["table"][:, 2 * k + 1], published)

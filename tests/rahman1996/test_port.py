@@ -5,14 +5,14 @@ import quadprog
 import pytest
 from scipy.optimize import minimize
 
-from linkrepro import legacy
+from linkrepro.legacy import rahman1996
 from linkrepro.errors import AssemblyError, ConvergenceError
 from linkrepro.harness.published_tables import PublishedTable
-from linkrepro.port.cssp import CRANK_DEG, CsspInputs, _listing_motions, balance, hessian_shift, solve_qp
-from linkrepro.port.cssp_data import QP_EQUALITIES, QP_ROWS, Constants
-from linkrepro.port.cssp_listing import printed_inverse
-from linkrepro.port.cssp_mechanics import Geometry, MassModel, kinematics
-from linkrepro.port.cssp_quirks import CSSP_CORRECTED
+from linkrepro.port.rahman1996.balance import CRANK_DEG, CsspInputs, _listing_motions, balance, hessian_shift, solve_qp
+from linkrepro.port.rahman1996.data import QP_EQUALITIES, QP_ROWS, Constants
+from linkrepro.port.rahman1996.listing import printed_inverse
+from linkrepro.port.rahman1996.mechanics import Geometry, MassModel, kinematics
+from linkrepro.port.rahman1996.quirks import CSSP_CORRECTED
 
 
 @pytest.fixture(scope="module")
@@ -32,7 +32,7 @@ def rel_to_column(a, b):
 @pytest.mark.parametrize("geometry", [{}, {"a4": 2.0, "alpha4_deg": 260.0}, {"a2": 3.1}, {"rpm": 100.0}])
 def test_printed_equals_legacy(geometry):
     """Every quantity of Tables 5.1-5.7, the QP's Hessian, DIAG and answer."""
-    port, ref = balance(CsspInputs(**geometry)), legacy.cssp(**geometry)
+    port, ref = balance(CsspInputs(**geometry)), rahman1996.cssp(**geometry)
     assert rel_to_column(port["table"], ref["table"]) < 1e-12
     np.testing.assert_allclose(port["inertia"], ref["inertia"], rtol=1e-12)
     np.testing.assert_allclose(port["hessian"], ref["hessian"], rtol=1e-6, atol=1e-6 * np.abs(ref["hessian"]).max())
@@ -43,7 +43,7 @@ def test_printed_equals_legacy(geometry):
 def test_dual_matrices_compose_screws():
     """Eq. (2.15): the dual part of M1 carries the crank pin (eq. 2.44); a dual product is
     the composition of the two screw displacements (t = tA + RA tB)."""
-    from linkrepro.port.cssp_listing import _l2, _m1
+    from linkrepro.port.rahman1996.listing import _l2, _m1
     from linkrepro.port.dual import skew
     c = Constants.of(CsspInputs(), False)
     m1, l2 = _m1(0.7, c), _l2(1.9, 0.3, c)
@@ -61,7 +61,7 @@ def test_printed_inverse_is_the_inverse_and_the_legacy_routine():
         s = a.T @ a
         b = printed_inverse(s)
         np.testing.assert_allclose(b @ s, np.eye(5), atol=1e-10)
-        np.testing.assert_allclose(b, legacy.inverse(s), rtol=1e-13, atol=1e-13 * np.abs(b).max())
+        np.testing.assert_allclose(b, rahman1996.inverse(s), rtol=1e-13, atol=1e-13 * np.abs(b).max())
 
 
 def test_qp_three_solvers_and_kkt(printed):
@@ -71,7 +71,7 @@ def test_qp_three_solvers_and_kkt(printed):
     h = printed["hessian"]
     bounds = Constants.of(CsspInputs(), True).qp_bounds
     x, diag = solve_qp(h, bounds=bounds)
-    ours = legacy.qprog(h, np.zeros(9), QP_ROWS, bounds, QP_EQUALITIES)
+    ours = rahman1996.qprog(h, np.zeros(9), QP_ROWS, bounds, QP_EQUALITIES)
     assert diag == ours["diag"] and np.array_equal(x, ours["sol"])
     # H + DIAG*I has condition ~ 1.4e7 / 0.07 = 2e8: agreement to eps * 2e8 ~ 4e-8
     other = quadprog.solve_qp(h + diag * np.eye(9), np.zeros(9), QP_ROWS.T, bounds, QP_EQUALITIES)[0]
@@ -193,7 +193,7 @@ def test_linkage_that_cannot_close():
     with pytest.raises(ConvergenceError):
         balance(CsspInputs(a2=2.5))
     with pytest.raises(ConvergenceError):
-        legacy.cssp(a2=2.5)
+        rahman1996.cssp(a2=2.5)
 
 
 @pytest.mark.parametrize("geometry", [{"a2": 3.2}, {"a2": 3.05}, {"alpha4_deg": 300.0}])
@@ -202,7 +202,7 @@ def test_printed_newton_fails_where_legacy_fails(geometry):
     listing's INVERSE the port gives up at the same crank angle as the legacy build, while
     the closed loop assembles at every position."""
     angles = []
-    for run in (lambda: legacy.cssp(**geometry), lambda: balance(CsspInputs(**geometry))):
+    for run in (lambda: rahman1996.cssp(**geometry), lambda: balance(CsspInputs(**geometry))):
         with pytest.raises(ConvergenceError) as info:
             run()
         angles.append(info.value.angle_deg)

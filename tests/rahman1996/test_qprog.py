@@ -11,7 +11,7 @@ Every expected number comes from a closed form, a textbook or another solver (th
 * DIAG: 0 for positive definite H; > 0 for a singular or slightly indefinite H, with the
   answer optimal for H + diag*I and (for a PSD H) optimal for the original problem;
 * failures: inconsistent constraints -> QPError, bad shapes -> ValueError, never a STOP;
-* the thesis's balancing problem (legacy.cssp(), REAL*4 QPROG): KKT and quadprog's optimum.
+* the thesis's balancing problem (rahman1996.cssp(), REAL*4 QPROG): KKT and quadprog's optimum.
 
 quadprog's convention: solve_qp(G, a, C, b, meq) minimises x'Gx/2 - a'x s.t. C'x >= b
 (first meq columns equalities), so we call it with a = -g and C = A.T; it needs G > 0.
@@ -25,8 +25,8 @@ import pytest
 import quadprog
 from scipy.optimize import minimize
 
-from linkrepro import legacy
-from linkrepro.legacy import QPError, qprog
+from linkrepro.legacy import rahman1996
+from linkrepro.legacy.rahman1996 import QPError, qprog
 
 EPS = np.finfo(float).eps
 
@@ -259,7 +259,7 @@ def test_psd_h_with_a_free_direction_reaches_the_true_minimum():
 
 FREE_DIAGONAL_CHILD = """
 import numpy as np
-from linkrepro.legacy import qprog
+from linkrepro.legacy.rahman1996 import qprog
 res = qprog(np.diag([1.0, 0.0]), [-1.0, 0.0])   # f = x1^2/2 - x1: f* = -1/2, x2 free
 print(repr(float(res["sol"] @ np.diag([1.0, 0.0]) @ res["sol"] / 2 - res["sol"][0])))
 """
@@ -296,7 +296,7 @@ def test_inconsistent_constraints_raise_qperror_and_the_next_call_works():
 
 
 def test_a_failing_qprog_does_not_stop_the_interpreter():
-    code = ("import numpy as np\nfrom linkrepro.legacy import qprog, QPError\n"
+    code = ("import numpy as np\nfrom linkrepro.legacy.rahman1996 import qprog, QPError\n"
             "try:\n    qprog(np.eye(1), [0.0], [[1.0], [-1.0]], [1.0, 0.0])\n"
             "except QPError:\n    print('caught')\nprint('alive')\n")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
@@ -335,7 +335,7 @@ def test_cssp_constraint_rows_match_the_data_statements(root):
 
 @pytest.fixture(scope="module")
 def cssp_run():
-    return legacy.cssp()
+    return rahman1996.cssp()
 
 
 def test_cssp_solution_satisfies_kkt_in_single_precision(cssp_run):

@@ -7,7 +7,7 @@ import tomllib
 import numpy as np
 import pytest
 
-from linkrepro.harness import arithmetic as A
+from linkrepro.harness.scenes.rahman1996 import arithmetic as A
 from linkrepro.harness import readings as R
 from linkrepro.harness.register import REGISTER_PATH
 
@@ -78,7 +78,7 @@ def legacy_counts():
     if shutil.which("gfortran") is None:
         pytest.skip("needs gfortran")
     from linkrepro.harness.published_tables import PublishedTable
-    from linkrepro.harness.scenes_rahman1996 import legacy_tables
+    from linkrepro.harness.scenes.rahman1996.tables import legacy_tables
     tables, counts = legacy_tables(), {}
     for table in ALL:
         key = table.replace(".", "_")
@@ -171,7 +171,7 @@ def test_report_section(measured):
 
 @needs_gfortran
 def test_shared_objects_build_the_reference_bit_for_bit():
-    from linkrepro.harness.scenes_rahman1996 import legacy_tables
+    from linkrepro.harness.scenes.rahman1996.tables import legacy_tables
     m = A.measure([A.get("reference")], shared=("driver.f", "imsl_qprog.f", "rahman1996_subroutines.f"))
     for table, frame in legacy_tables().items():
         for col in ("before", "after"):

@@ -4,10 +4,10 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from linkrepro.harness import rahman1996_figures
+from linkrepro.harness.scenes.rahman1996 import figures
 from linkrepro.harness.diff import diff_scene, quirk_effects
 from linkrepro.harness.published_tables import PublishedTable
-from linkrepro.harness.scenes import SCENES, get
+from linkrepro.harness.scenes import TABLES as SCENES, get
 
 NAMES = [name for name in SCENES if name.startswith("rahman1996")]
 
@@ -60,9 +60,9 @@ def test_half_unit_reads_exponents():
 def test_section_5_3_averages_are_legacy_means():
     """D059: five of the six averages quoted in section 5.3 are legacy's 37-row means to
     the quoted digits; the shaking moment's is not."""
-    stats = rahman1996_figures.section_5_3(rahman1996_figures.percentages())
+    stats = figures.section_5_3(figures.percentages())
     legacy = stats[stats["engine"] == "legacy"].set_index("table")
-    quoted = pd.read_csv(rahman1996_figures.PUBLISHED_DIR / "rahman1996_section5_3.csv", comment="#",
+    quoted = pd.read_csv(figures.PUBLISHED_DIR / "rahman1996_section5_3.csv", comment="#",
                          dtype={"table": str}).set_index("table")
     for table in ["5_2", "5_3", "5_5", "5_6", "5_7"]:
         digits = len(str(quoted.at[table, "average"]).split(".")[1])

@@ -12,15 +12,17 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from .. import legacy
-from ..port import PRINTED, cognate_case1, source_case1
-from ..port.ked_case2 import LISTING as CASE2
-from ..port.ked_case2 import COGNATE_LISTING as CASE2_COG
-from ..port.ked_case2 import case2_cognate, case2_source
-from ..port.ked_case3 import COGNATE_LISTING as CASE3_COG
-from ..port.ked_case3 import LISTING as CASE3
-from ..port.ked_case3 import case3_cognate, case3_source
-from .report import curve_figure, draw_all
+from ....legacy import ali1977
+from ....port.ali1977 import PRINTED, cognate_case1, source_case1
+from ....port.ali1977.case2 import LISTING as CASE2
+from ....port.ali1977.case2 import COGNATE_LISTING as CASE2_COG
+from ....port.ali1977.case2 import case2_cognate, case2_source
+from ....port.ali1977.case3 import COGNATE_LISTING as CASE3_COG
+from ....port.ali1977.case3 import LISTING as CASE3
+from ....port.ali1977.case3 import case3_cognate, case3_source
+from ...report import curve_figure, draw_all
+from ...scene import ReportScene
+from .tables import GROUP, START
 
 NAME = "ali1977-appendixA"
 TITLE = "Ali (1977) Appendix A: elastic deflections against input-link rotation, 300 and 400 rpm"
@@ -31,17 +33,17 @@ DEG = np.arange(0.0, 360.0 + 1e-9, STEP)
 #: (case, mechanism) -> (legacy function, port function); the Case II cognate's missing page
 #: and the whole Case III cognate are reconstructions (D037).
 CURVES = {
-    ("I", "source"): (lambda rpm: legacy.case1_source(rpm=rpm, step_deg=STEP),
+    ("I", "source"): (lambda rpm: ali1977.case1_source(rpm=rpm, step_deg=STEP),
                       lambda rpm: source_case1(DEG, rpm=rpm, quirks=PRINTED)),
-    ("I", "cognate"): (lambda rpm: legacy.case1_cognate(rpm=rpm, step_deg=STEP),
+    ("I", "cognate"): (lambda rpm: ali1977.case1_cognate(rpm=rpm, step_deg=STEP),
                        lambda rpm: cognate_case1(DEG, rpm=rpm, quirks=PRINTED)),
-    ("II", "source"): (lambda rpm: legacy.case2_source(rpm=rpm, step_deg=STEP),
+    ("II", "source"): (lambda rpm: ali1977.case2_source(rpm=rpm, step_deg=STEP),
                        lambda rpm: case2_source(DEG, rpm=rpm, quirks=CASE2)),
-    ("II", "cognate"): (lambda rpm: legacy.case2_cognate(rpm=rpm, step_deg=STEP),
+    ("II", "cognate"): (lambda rpm: ali1977.case2_cognate(rpm=rpm, step_deg=STEP),
                         lambda rpm: case2_cognate(DEG, rpm=rpm, quirks=CASE2_COG)),
-    ("III", "source"): (lambda rpm: legacy.case3_source(rpm=rpm, step_deg=STEP),
+    ("III", "source"): (lambda rpm: ali1977.case3_source(rpm=rpm, step_deg=STEP),
                         lambda rpm: case3_source(DEG, rpm=rpm, quirks=CASE3)),
-    ("III", "cognate"): (lambda rpm: legacy.case3_cognate(rpm=rpm, step_deg=STEP),
+    ("III", "cognate"): (lambda rpm: ali1977.case3_cognate(rpm=rpm, step_deg=STEP),
                          lambda rpm: case3_cognate(DEG, rpm=rpm, quirks=CASE3_COG)),
 }
 QUANTITIES = {"dx": "elastic X displacement of P (in)", "dy": "elastic Y displacement of P (in)",
@@ -132,3 +134,13 @@ def _report(curves, claims, gap, timings, missing, plots) -> str:
                      f"{r.peak_deg_300:g} / {r.peak_deg_400:g} | {'yes' if r.peak_in_second_half else 'no'} |")
     lines += ["", "## Plots", ""] + [f"![{p.stem}]({p.name})" for p in plots]
     return "\n".join(lines) + "\n"
+
+
+def overview(result: dict) -> list[str]:
+    """The run report's line: curves produced, the largest engine gap, what is missing."""
+    return [f"{result['curves']} of 36 curves, engine against engine (no published numbers); largest "
+            f"|port - legacy| {result['max_engine_gap']:.3g}; "
+            f"{', '.join(result['missing']) or 'every curve from both engines'}."]
+
+
+SCENE = ReportScene(name=NAME, title=TITLE, group=GROUP, start=START, produce=run, overview=overview)

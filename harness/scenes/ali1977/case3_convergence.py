@@ -1,20 +1,24 @@
 """The Case III convergence study: sub-elements n and angle step against the converged tip
 deflection, with time, and which mass model each Ali (1977) table needs.
 
-``reproduce`` writes it as out/case3_convergence.{csv,png,md}; ``linkrepro bench`` prints it.
+``reproduce`` writes it as scene ali1977-case3-convergence (case3_convergence.{csv,png}, report.md);
+``linkrepro bench`` prints it.
 Times are wall-clock seconds of this run (best of ``repeat``).
 """
 from __future__ import annotations
 
 import time
+from pathlib import Path
 
 import numpy as np
 import pandas as pd
 
-from .. import legacy
-from ..port import CORRECTED, source_case1
-from ..port.ked_case3 import LISTING as CASE3_LISTING
-from ..port.ked_case3 import case3_linkage, case3_on_linkage
+from ....legacy import ali1977
+from ....port.ali1977 import CORRECTED, source_case1
+from ....port.ali1977.case3 import LISTING as CASE3_LISTING
+from ....port.ali1977.case3 import case3_linkage, case3_on_linkage
+from ...csv_output import write_csv
+from ...scene import ReportScene
 
 
 def _timed(func, repeat: int):
@@ -59,7 +63,7 @@ def case3_data(repeat: int, reference_n: int = 3200) -> pd.DataFrame:
         linkages = {model: _timed(lambda: case3_linkage(deg, quirks=quirks), repeat)
                     for model, quirks in models.items()}
         converged = _converged(linkages["coupled"][1], reference_n)
-        t_leg, _ = _timed(lambda: legacy.case3_source(step_deg=step), repeat)
+        t_leg, _ = _timed(lambda: ali1977.case3_source(step_deg=step), repeat)
         for n in CASE3_NS:
             for model, (t_kinematics, linkage) in linkages.items():
                 seconds, got = _timed(lambda: case3_on_linkage(linkage, n=n), repeat)
@@ -93,7 +97,7 @@ def case3_sweep(repeat: int, data: pd.DataFrame | None = None) -> list[str]:
 def plot_case3(data: pd.DataFrame, path) -> None:
     """Error against n and against time, per angle step and model."""
     from matplotlib.figure import Figure
-    from .report import save_png
+    from ...report import save_png
     fig = Figure(figsize=(10, 3.8))
     left, right = fig.subplots(1, 2)
     for (step, model), g in data.groupby(["step_deg", "model"]):
@@ -130,3 +134,28 @@ def table_model_needs() -> list[str]:
         err = _error(out, converged)
         lines.append(f"| {label} | {err:.2e} | {'yes' if err <= 0.0005 else 'no'} |")
     return lines
+
+
+NAME = "ali1977-case3-convergence"
+TITLE = "Ali (1977) Case III: speed against error of the distributed-mass model"
+
+
+def run(out_dir: Path) -> None:
+    """out/ali1977-case3-convergence/: case3_convergence.{csv,png} and report.md."""
+    target = out_dir / NAME
+    target.mkdir(parents=True, exist_ok=True)
+    data = case3_data(repeat=1)
+    write_csv(data, target / "case3_convergence.csv", "%.6g")
+    plot_case3(data, target / "case3_convergence.png")
+    (target / "report.md").write_text(
+        "# Case III: speed against error\n" + "\n".join(case3_sweep(1, data))
+        + "\n\n![case3 convergence](case3_convergence.png)\n")
+
+
+def overview(_) -> list[str]:
+    return ["Sub-elements n and angle step against the converged distributed-mass answer, and which "
+            "mass model each table needs (timings from this one run)."]
+
+
+#: its own process, beside the tables (it is as long as they are)
+SCENE = ReportScene(name=NAME, title=TITLE, group=NAME, start=2, produce=run, overview=overview)

@@ -12,7 +12,7 @@ that feeds the loads, a column of beta2 the printed page builds): its variant is
 with the opposite sign.  A *frame* variant changes a convention as a whole (the loads'
 projection, the output frame, the point a mass sits at).  Each case is searched over the
 reconstruction, every single variant and every pair: ``search("II")`` /
-``search("III")``, or ``python -m linkrepro.harness.cognate_search``.
+``search("III")``, or ``python -m linkrepro.harness.scenes.ali1977.cognate_search``.
 
 Cells: the cognate columns dX, dY, X_new, Y_new of rows 0-340 (72 cells; row 360 repeats
 row 0) within half a unit of the printed digit.  Units: inch.
@@ -25,14 +25,14 @@ import sys
 import numpy as np
 import pandas as pd
 
-from ..port import libm
-from ..port.ked_case1 import EXAMPLE, GRAVITY_IN, GRAVITY_REAL4, _cognate_linkage, deflection, flexibility
-from ..port.ked_case2 import COGNATE_LISTING as CASE2_COGNATE
-from ..port.ked_case2 import DENSITY, beta2, case2_source
-from ..port.ked_case3 import COGNATE_LISTING as CASE3_COGNATE
-from ..port.ked_case3 import case3_source, node_weights
-from ..port.real4 import store
-from .published_tables import PublishedTable
+from ....port import libm
+from ....port.ali1977.case1 import EXAMPLE, GRAVITY_IN, GRAVITY_REAL4, _cognate_linkage, deflection, flexibility
+from ....port.ali1977.case2 import COGNATE_LISTING as CASE2_COGNATE
+from ....port.ali1977.case2 import DENSITY, beta2, case2_source
+from ....port.ali1977.case3 import COGNATE_LISTING as CASE3_COGNATE
+from ....port.ali1977.case3 import case3_source, node_weights
+from ....port.real4 import store
+from ...published_tables import PublishedTable
 
 DEG = np.arange(0.0, 341.0, 20.0)
 COLUMNS = ("cog_dx", "cog_dy", "cog_xnew", "cog_ynew")
@@ -209,7 +209,7 @@ def search(case: str) -> pd.DataFrame:
 def as_markdown(found: pd.DataFrame, top: int = 8) -> str:
     """The search's summary for the report: how many variants, the reconstruction, the best."""
     lines = ["## Sign and frame search over the reconstructed cognate loads (D037)", "",
-             "Every term of a reconstruction flipped alone and in pairs (`linkrepro.harness.cognate_search`); "
+             "Every term of a reconstruction flipped alone and in pairs (`linkrepro.harness.scenes.ali1977.cognate_search`); "
              "cells: the cognate columns dX, dY, X_new, Y_new of rows 0-340 at the printed digit.", ""]
     for case, group in found.groupby("case", sort=False):
         base = group[group["variant"] == "(reconstruction)"].iloc[0]

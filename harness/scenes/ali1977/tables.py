@@ -1,4 +1,4 @@
-"""Scenes: one per published table.  A scene knows its inputs, how each engine
+"""Ali (1977) Tables I-III: one table scene each.  A scene knows its inputs, how each engine
 produces the table, and the table's columns (the published table's, exactly).
 """
 from __future__ import annotations
@@ -6,17 +6,19 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from .. import legacy
-from ..port import CORRECTED, PRINTED, Quirks, cognate_case1, source_case1
-from ..port.ked_case2 import COGNATE_LISTING as CASE2_COGNATE
-from ..port.ked_case2 import LISTING as CASE2_LISTING
-from ..port.ked_case2 import case2_cognate, case2_source
-from ..port.ked_case3 import COGNATE_LISTING as CASE3_COGNATE
-from ..port.ked_case3 import LISTING as CASE3_LISTING
-from ..port.ked_case3 import case3_cognate, case3_source
-from .engines import run_printed
-from .scene import Scene
-from .scenes_rahman1996 import RAHMAN1996_SCENES
+from ....legacy import ali1977
+from ....port.ali1977 import CORRECTED, PRINTED, Quirks, cognate_case1, source_case1
+from ....port.ali1977.case2 import COGNATE_LISTING as CASE2_COGNATE
+from ....port.ali1977.case2 import LISTING as CASE2_LISTING
+from ....port.ali1977.case2 import case2_cognate, case2_source
+from ....port.ali1977.case3 import COGNATE_LISTING as CASE3_COGNATE
+from ....port.ali1977.case3 import LISTING as CASE3_LISTING
+from ....port.ali1977.case3 import case3_cognate, case3_source
+from ...csv_output import write_csv
+from ...engines import run_printed
+from ...published_tables import PublishedTable
+from ...table_scene import TableScene
+from . import cognate_search, sums
 
 KED_COLUMNS = ["input_deg", "rigid_x", "rigid_y", "src_dx", "src_dy", "src_xnew", "src_ynew",
                   "cog_dx", "cog_dy", "cog_xnew", "cog_ynew"]
@@ -54,8 +56,8 @@ def _ked_printed(source: str, cognate: str | None) -> pd.DataFrame:
 
 
 def _table1_legacy() -> pd.DataFrame:
-    src = legacy.case1_source(step_deg=20.0)
-    cog = legacy.case1_cognate(step_deg=20.0)
+    src = ali1977.case1_source(step_deg=20.0)
+    cog = ali1977.case1_cognate(step_deg=20.0)
     return ked_frame(src["deg"], cog["xp"], cog["yp"], src, cog)
 
 
@@ -82,12 +84,30 @@ def _table3_port(quirks: Quirks) -> pd.DataFrame:
     return _with_source_rigid(src, cog)
 
 
+def sums_section(scene: TableScene, published: PublishedTable, diff: pd.DataFrame, target) -> str:
+    """The table's printed sums X_new = X + dX against its printed terms (identities.csv)."""
+    checks = sums.with_register(sums.sum_checks(scene.table, published), diff)
+    write_csv(checks, target / "identities.csv", "%.9g")
+    return sums.as_markdown(checks)
+
+
+def cognate_section(scene: TableScene, published: PublishedTable, diff: pd.DataFrame, target) -> str:
+    """The sign and frame search over the reconstructed cognate loads (cognate_search.csv)."""
+    found = cognate_search.search(cognate_search.case_of(scene.table))
+    write_csv(found, target / "cognate_search.csv", "%.9g")
+    return cognate_search.as_markdown(found)
+
+
+#: the process the Ali (1977) tables and curves share
+GROUP, START = "ali1977", 1
 COMMON_INPUTS = ("L1=10, L2=10, L3=30, L4=25, L5=30 in; A=0.1963495408 in^2, E=1e7 psi, "
                  "I=0.0030679615 in^4; PI=3.142857143 as printed. ")
 
-ALI1977_TABLE1 = Scene(
+ALI1977_TABLE1 = TableScene(
     name="ali1977-table1",
     title="Ali (1977) Table I: mass at the path point (Case I), source four-bar and crossed cognate",
+    group=GROUP,
+    start=START,
     table="ali1977_table1",
     columns=KED_COLUMNS,
     key="input_deg",
@@ -100,13 +120,17 @@ ALI1977_TABLE1 = Scene(
     printed=lambda: _ked_printed("ali1977_case1_source", "ali1977_case1_cognate"),
     legacy=_table1_legacy,
     port=_table1_port,
+    quirks=(PRINTED, CORRECTED),
+    sections=(sums_section,),
     notes=["The printed engine shows only what the listings WRITE (the deflections); the source "
            "listing stops before printing 360 deg."],
 )
 
-ALI1977_TABLE2 = Scene(
+ALI1977_TABLE2 = TableScene(
     name="ali1977-table2",
     title="Ali (1977) Table II: mass at each joint (Case II), source four-bar and crossed cognate",
+    group=GROUP,
+    start=START,
     table="ali1977_table2",
     columns=KED_COLUMNS,
     key="input_deg",
@@ -115,15 +139,19 @@ ALI1977_TABLE2 = Scene(
             "Cognate columns: the Case II cognate listing with the missing page (statements 241-281) "
             "reconstructed from the source listing's loads, see D037."),
     printed=lambda: _ked_printed("ali1977_case2_source", None),
-    legacy=lambda: _with_source_rigid(legacy.case2_source(step_deg=20.0), legacy.case2_cognate(step_deg=20.0)),
+    legacy=lambda: _with_source_rigid(ali1977.case2_source(step_deg=20.0), ali1977.case2_cognate(step_deg=20.0)),
     port=_table2_port,
+    quirks=(PRINTED, CORRECTED),
+    sections=(sums_section, cognate_section),
     notes=["Cognate columns: the Case II cognate listing with its missing page RECONSTRUCTED (D037); "
            "the printed engine cannot give them (the printed program never sets them)."],
 )
 
-ALI1977_TABLE3 = Scene(
+ALI1977_TABLE3 = TableScene(
     name="ali1977-table3",
     title="Ali (1977) Table III: distributed mass model (Case III, n = 5), source four-bar and cognate",
+    group=GROUP,
+    start=START,
     table="ali1977_table3",
     columns=KED_COLUMNS,
     key="input_deg",
@@ -132,18 +160,12 @@ ALI1977_TABLE3 = Scene(
             "prints). port_corrected: the coupled 5-segment model. Cognate columns: a "
             "reconstruction, D037."),
     printed=lambda: _ked_printed("ali1977_case3_source", None),
-    legacy=lambda: _with_source_rigid(legacy.case3_source(step_deg=20.0), legacy.case3_cognate(step_deg=20.0)),
+    legacy=lambda: _with_source_rigid(ali1977.case3_source(step_deg=20.0), ali1977.case3_cognate(step_deg=20.0)),
     port=_table3_port,
+    quirks=(PRINTED, CORRECTED),
+    sections=(sums_section, cognate_section),
     notes=["Cognate columns: a RECONSTRUCTION (no listing exists, D037), in src/ and in the port; "
            "it does not reproduce them."],
 )
 
-SCENES: dict[str, Scene] = {s.name: s for s in [ALI1977_TABLE1, ALI1977_TABLE2, ALI1977_TABLE3,
-                                                 *RAHMAN1996_SCENES]}
-
-
-def get(name: str) -> Scene:
-    try:
-        return SCENES[name]
-    except KeyError:
-        raise KeyError(f"unknown scene {name!r}; known: {', '.join(SCENES)}") from None
+TABLES = [ALI1977_TABLE1, ALI1977_TABLE2, ALI1977_TABLE3]

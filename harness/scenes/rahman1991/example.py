@@ -19,13 +19,15 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from ..errors import LinkageError
-from ..port import gsc, gsc_position
-from ..port.gsc_data import GscInputs
-from ..port.gsc_quirks import GSC_CORRECTED, GSC_PRINTED
-from . import near_singular, planar_reference, progress, rahman1991_figures
-from .csv_output import write_csv
-from .published_tables import PUBLISHED_DIR
+from ....errors import LinkageError
+from ....port.rahman1991 import analysis as gsc, position as gsc_position
+from ....port.rahman1991.data import GscInputs
+from ....port.rahman1991.quirks import GSC_CORRECTED, GSC_PRINTED
+from . import near_singular, planar_reference, figures as rahman1991_figures
+from ... import progress
+from ...csv_output import write_csv
+from ...published_tables import PUBLISHED_DIR
+from ...scene import ReportScene
 
 NAME = "rahman1991-example"
 TITLE = ("Rahman (1991) section 3.1: slider displacement and joint forces over the example's grid; "
@@ -135,7 +137,7 @@ def measure_claims(frames: dict[str, pd.DataFrame], limits: pd.DataFrame) -> pd.
 
 def _legacy_turn(inputs: GscInputs) -> bool:
     """True when the 1996 legacy build's Newton (10-deg steps, REAL*4) runs a full turn."""
-    from ..legacy import rahman1996
+    from ....legacy import rahman1996
     try:
         rahman1996.cssp(a1=inputs.a1, a2=inputs.a2, a4=inputs.a4, alpha4_deg=inputs.alpha4_deg,
                         s1=inputs.s1, rpm=inputs.rpm)
@@ -198,9 +200,9 @@ def legacy_on_grid(printed: pd.DataFrame) -> pd.DataFrame:
     tests/test_differential_rahman.py) runs on where the build stops after a later failure;
     its positions are diffed against the 1991 port's (1-deg steps, float64) at the angles
     both solved: largest |S4 difference| (in) and |theta2 difference| (deg)."""
-    from ..legacy import rahman1996
-    from ..port.cssp_data import Constants
-    from ..port.cssp_listing import initial_estimate, listing_pass
+    from ....legacy import rahman1996
+    from ....port.rahman1996.data import Constants
+    from ....port.rahman1996.listing import initial_estimate, listing_pass
     rows = []
     for a4, al, s1 in itertools.product(gsc.GRID_A4, gsc.GRID_ALPHA4, gsc.GRID_S1):
         inputs = GscInputs(a4=a4, alpha4_deg=al, s1=s1)
@@ -260,7 +262,7 @@ def run(out_dir: Path) -> dict:
 
 
 def _md(frame: pd.DataFrame) -> str:
-    from .report import markdown_table
+    from ...report import markdown_table
     return markdown_table(frame.set_index(frame.columns[0]), "{:.4g}")
 
 
@@ -283,3 +285,16 @@ def report(frames, claims, study, singular, legacy, plots, timings) -> str:
         counts = frame["status"].value_counts().to_dict()
         lines.insert(4, f"- {engine}: positions by status {counts}")
     return "\n".join(lines) + "\n"
+
+
+def overview(result: dict) -> list[str]:
+    """The run report's table: each claim's verdicts per engine."""
+    verdicts = result["claims"].groupby(["engine", "verdict"]).size().unstack(fill_value=0)
+    return (["No numeric table is printed; each claim of section 3.2, per engine "
+             "(see the scene report and register D085-D094):", "",
+             "| engine | " + " | ".join(verdicts.columns) + " |", "|---|" + "---|" * len(verdicts.columns)]
+            + [f"| {engine} | " + " | ".join(str(v) for v in row) + " |" for engine, row in verdicts.iterrows()])
+
+
+#: the longest scene starts first; it compiles the Newton kernels the 1996 tables load
+SCENE = ReportScene(name=NAME, title=TITLE, group="rahman1991", start=0, produce=run, overview=overview)

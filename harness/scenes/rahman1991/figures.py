@@ -25,7 +25,7 @@ import numpy as np
 import pandas as pd
 from matplotlib.figure import Figure
 
-from .report import draw_all, save_png
+from ...report import draw_all, save_png
 
 IDEAL = {"a4": 0.0, "s1": 0.0, "alpha4_deg": 270.0}
 FAMILIES = {"a4": ("a4", [10.0, 20.0, 30.0], {"s1": 3.5, "alpha4_deg": 270.0}),

@@ -24,10 +24,10 @@ import mpmath
 import numpy as np
 import pandas as pd
 
-from ..port import gsc, gsc_position, gsc_printed_rates
-from ..port.gsc import ball_angles
-from ..port.cssp_mechanics import kinematics
-from ..port.gsc_data import GscInputs
+from ....port.rahman1991 import analysis as gsc, position as gsc_position, printed_rates
+from ....port.rahman1991.analysis import ball_angles
+from ....port.rahman1996.mechanics import kinematics
+from ....port.rahman1991.data import GscInputs
 
 CONFIGS = [GscInputs(a4=10.0), GscInputs(a4=30.0, s1=3.5), GscInputs(a4=20.0, alpha4_deg=232.0)]
 OFFSETS_DEG = (1.0, 1e-2, 1e-4, 1e-6, 1e-8)
@@ -64,8 +64,8 @@ def crossings(inputs: GscInputs) -> list[tuple[float, np.ndarray]]:
 def _printed_rates(q, inputs: GscInputs, m):
     t2, e2, t3, e3, _ = (m.mpf(float(v)) if m is mpmath else v for v in q)
     w = m.mpf(inputs.omega) if m is mpmath else inputs.omega
-    v = gsc_printed_rates.velocities(t2, e2, t3, e3, w, 0.0, inputs.a1, inputs.a2, m=m)
-    a = gsc_printed_rates.accelerations(t2, e2, t3, e3, v, w, 0.0, 0.0, 0.0, inputs.a1, inputs.a2, m=m)
+    v = printed_rates.velocities(t2, e2, t3, e3, w, 0.0, inputs.a1, inputs.a2, m=m)
+    a = printed_rates.accelerations(t2, e2, t3, e3, v, w, 0.0, 0.0, 0.0, inputs.a1, inputs.a2, m=m)
     return [v[0], v[2], v[4], a[0], a[2], a[4]]
 
 

@@ -38,11 +38,11 @@ from typing import Callable
 import numpy as np
 import pandas as pd
 
-from .csv_output import write_csv
-from .published_tables import PublishedTable
-from .readings import COMPILE_TIMEOUT_S, COMPILER, CompilerError
+from ...csv_output import write_csv
+from ...published_tables import PublishedTable
+from ...readings import COMPILE_TIMEOUT_S, COMPILER, PRINTED_DIR, CompilerError
 
-LEGACY_DIR = Path(__file__).resolve().parent.parent / "legacy"
+LEGACY_DIR = PRINTED_DIR.parent
 SRC = ("src/rahman1996_cssp_main.f", "src/rahman1996_subroutines.f", "src/imsl_qprog.f")
 PRINTED = ("printed/rahman1996_cssp_main.f", "printed/rahman1996_subroutines.f", "src/imsl_qprog.f")
 MAIN = "rahman1996_cssp_main.f"
@@ -476,7 +476,7 @@ def parse(stdout: str) -> dict:
 
 def tables_of(run: dict) -> dict[str, pd.DataFrame]:
     """A run as Tables 5.1-5.7, by the legacy engine's own ``as_tables``."""
-    from .scenes_rahman1996 import as_tables
+    from .tables import as_tables
     return as_tables(run)
 
 
@@ -753,6 +753,6 @@ def write(out_dir: Path, variants=VARIANTS) -> tuple[Measurement, pd.DataFrame, 
     return m, counts, cells, text
 
 
-if __name__ == "__main__":                 # python -m linkrepro.harness.arithmetic [DIR]
+if __name__ == "__main__":                 # python -m linkrepro.harness.scenes.rahman1996.arithmetic [DIR]
     import sys
     print(write(Path(sys.argv[1] if len(sys.argv) > 1 else "out/arithmetic"))[3])

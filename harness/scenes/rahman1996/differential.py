@@ -1,6 +1,6 @@
 """The port against the legacy build on a fixed random sample of Rahman (1996) geometries.
 
-``python -m linkrepro.harness.differential [--geometries 500] [--seed 1]`` prints, for the
+``python -m linkrepro.harness.scenes.rahman1996.differential [--geometries 500] [--seed 1]`` prints, for the
 CSSP balancing program with the listing's bugs (legacy ``cssp`` against the port's
 ``balance(..., CSSP_PRINTED)``): how many geometries give the same outcome (both return, or
 both raise the same error at the same crank angle) and how far the tables differ where both
@@ -17,10 +17,10 @@ import collections
 
 import numpy as np
 
-from .. import legacy
-from ..errors import LinkageError, QPError
-from ..port.cssp import CSSP_PRINTED, balance
-from ..port.cssp_data import CsspInputs
+from ....legacy import rahman1996
+from ....errors import LinkageError, QPError
+from ....port.rahman1996.balance import CSSP_PRINTED, balance
+from ....port.rahman1996.data import CsspInputs
 
 #: a table move above this (relative to a column's largest value) is a jump, not round-off
 JUMP = 1e-3
@@ -53,7 +53,7 @@ def port_against_legacy(geometries: list[dict]) -> tuple[collections.Counter, fl
     """Outcome counts and the largest table difference where both engines return."""
     counts, worst = collections.Counter(), 0.0
     for g in geometries:
-        (lk, lv), (pk, pv) = outcome(lambda: legacy.cssp(**g)), outcome(lambda: balance(CsspInputs(**g), CSSP_PRINTED))
+        (lk, lv), (pk, pv) = outcome(lambda: rahman1996.cssp(**g)), outcome(lambda: balance(CsspInputs(**g), CSSP_PRINTED))
         if lk == pk == "returns":
             worst = max(worst, relative_difference(lv, pv))
             counts["both return"] += 1
@@ -74,10 +74,10 @@ def chaos(geometries: list[dict]) -> tuple[collections.Counter, np.ndarray]:
     counts, and the relative table moves where the nudged build still returns."""
     counts, moves = collections.Counter(), []
     for g in geometries:
-        base_kind, base = outcome(lambda: legacy.cssp(**g))
+        base_kind, base = outcome(lambda: rahman1996.cssp(**g))
         effect = "smooth"
         for name in ("a1", "a2", "a4", "s1"):
-            kind, value = outcome(lambda: legacy.cssp(**dict(g, **{name: one_ulp_up(g[name])})))
+            kind, value = outcome(lambda: rahman1996.cssp(**dict(g, **{name: one_ulp_up(g[name])})))
             if kind != base_kind or (kind != "returns" and value != base):
                 effect = "outcome changes"
                 break
@@ -89,7 +89,7 @@ def chaos(geometries: list[dict]) -> tuple[collections.Counter, np.ndarray]:
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m linkrepro.harness.differential", description=__doc__.split("\n")[0])
+    parser = argparse.ArgumentParser(prog="python -m linkrepro.harness.scenes.rahman1996.differential", description=__doc__.split("\n")[0])
     parser.add_argument("--geometries", type=int, default=500)
     parser.add_argument("--seed", type=int, default=1)
     args = parser.parse_args(argv)

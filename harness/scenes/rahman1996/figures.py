@@ -10,15 +10,18 @@ from pathlib import Path
 
 import pandas as pd
 
-from . import identities, register
-from .identities import decrement_pct
-from .csv_output import write_csv
-from .published_tables import PUBLISHED_DIR, PublishedTable
-from .report import STYLE, curve_figure, draw_all
-from ..port.cssp_quirks import CSSP_CORRECTED, CSSP_PRINTED
-from .scenes_rahman1996 import CRANK_DEG, legacy_tables, port_tables, printed_run
+from ... import register
+from . import quoted_numbers
+from .quoted_numbers import decrement_pct
+from ...csv_output import write_csv
+from ...published_tables import PUBLISHED_DIR, PublishedTable
+from ...report import STYLE, curve_figure, draw_all
+from ....port.rahman1996.quirks import CSSP_CORRECTED, CSSP_PRINTED
+from ...scene import ReportScene
+from .tables import CRANK_DEG, GROUP, START, legacy_tables, port_tables, printed_run
 
 NAME = "rahman1996-figures"
+TITLE = "Rahman (1996) Figures 5.1-5.6 and the section 5.3 percentages"
 TABLES = ["5_2", "5_3", "5_4", "5_5", "5_6", "5_7"]
 
 
@@ -74,7 +77,7 @@ def run(out_dir: Path) -> dict:
     pct.to_csv(target / "percentages.csv", index=False, float_format="%.6g")
     stats = section_5_3(pct)
     stats.to_csv(target / "section5_3.csv", index=False, float_format="%.6g")
-    quoted = identities.percentage_checks(register.load())
+    quoted = quoted_numbers.percentage_checks(register.load())
     write_csv(quoted, target / "identities.csv", "%.9g")
     plots = plot_figures(pct, target)
     lines = ["# Rahman (1996), Figures 5.1-5.6 and the percentages of section 5.3", "",
@@ -90,6 +93,13 @@ def run(out_dir: Path) -> dict:
                      f"{r.min_pct:.4f} ({r.min_at_deg}) | {r.mean37_pct:.4f} | {r.mean36_pct:.4f} | "
                      f"{r.negative_at_deg} | {r.text_range}; {r.text_average} | {r.text_claim} |")
     lines += ["", "See register entries D058 (misprints that produce the published outliers) and D059 "
-              "(the averages).", "", identities.percentages_markdown(quoted), "", "## Figures", ""] + [f"![{p.stem}]({p.name})" for p in plots]
+              "(the averages).", "", quoted_numbers.percentages_markdown(quoted), "", "## Figures", ""] + [f"![{p.stem}]({p.name})" for p in plots]
     (target / "report.md").write_text("\n".join(lines) + "\n")
-    return {"scene": NAME, "title": "Figures 5.1-5.6 and the percentages of section 5.3", "stats": stats}
+    return {"scene": NAME, "title": TITLE, "stats": stats}
+
+
+def overview(_) -> list[str]:
+    return ["Recomputed from every engine beside the printed text."]
+
+
+SCENE = ReportScene(name=NAME, title=TITLE, group=GROUP, start=START, produce=run, overview=overview)

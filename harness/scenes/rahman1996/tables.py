@@ -13,12 +13,12 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from .. import legacy
-from ..legacy.rahman1996 import CSSP_COLUMNS, INERTIA_ROWS
-from ..port.cssp import CRANK_DEG, CsspInputs, balance
-from ..port.cssp_quirks import CSSP_CORRECTED, CSSP_PRINTED
-from .engines import PrintedProgramError, run_program
-from .scene import Scene
+from ....legacy import rahman1996
+from ....legacy.rahman1996 import CSSP_COLUMNS, INERTIA_ROWS
+from ....port.rahman1996.balance import CRANK_DEG, CsspInputs, balance
+from ....port.rahman1996.quirks import CSSP_CORRECTED, CSSP_PRINTED
+from ...engines import PrintedProgramError, run_program
+from ...table_scene import TableScene
 
 PROGRAM = "rahman1996_cssp_main"
 SERIES_COLUMNS = ["crank_deg", "before", "after"]
@@ -55,7 +55,7 @@ def inertia_frame(values: np.ndarray) -> pd.DataFrame:
 
 
 def as_tables(run: dict) -> dict[str, pd.DataFrame]:
-    """A CSSP run (legacy.cssp() or port.cssp.balance(): ``table``, ``inertia``) as the seven tables."""
+    """A CSSP run (rahman1996.cssp() or port.cssp.balance(): ``table``, ``inertia``) as the seven tables."""
     tables = {"5_1": inertia_frame(run["inertia"])}
     for k, table in enumerate(dict.fromkeys(t for t, _ in CSSP_COLUMNS)):
         tables[table] = series_frame(run["table"][:, 2 * k:2 * k + 2])
@@ -65,7 +65,7 @@ def as_tables(run: dict) -> dict[str, pd.DataFrame]:
 @lru_cache(maxsize=1)
 def legacy_tables() -> dict[str, pd.DataFrame]:
     """Every table from one call of the FORTRAN (legacy/src)."""
-    return as_tables(legacy.cssp())
+    return as_tables(rahman1996.cssp())
 
 
 @lru_cache(maxsize=1)
@@ -103,11 +103,18 @@ def port_tables(quirks) -> dict[str, pd.DataFrame]:
     return as_tables(balance(CsspInputs(), quirks=quirks))
 
 
-def _scene(table: str) -> Scene:
+#: the process the Rahman (1996) scenes share (one run of each engine gives every table); it
+#: starts last, when the Newton kernels it shares with Rahman (1991) are compiled
+GROUP, START = "rahman1996", 3
+
+
+def _scene(table: str) -> TableScene:
     inertia = table == "5_1"
-    return Scene(
+    return TableScene(
         name=f"rahman1996-table{table}",
         title=f"Rahman (1996) Table {table.replace('_', '.')}: {TITLES[table]}, before and after optimum balancing",
+        group=GROUP,
+        start=START,
         table=f"rahman1996_table{table}",
         columns=INERTIA_COLUMNS if inertia else SERIES_COLUMNS,
         key=("link", "quantity") if inertia else "crank_deg",
@@ -127,4 +134,4 @@ def _scene(table: str) -> Scene:
     )
 
 
-RAHMAN1996_SCENES = [_scene(t) for t in TITLES]
+TABLES = [_scene(t) for t in TITLES]

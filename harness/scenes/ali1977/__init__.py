@@ -1,0 +1,7 @@
+"""Ali (1977), the K.E.D. analysis of a four-bar and its crossed cognate: Tables I-III, the
+Appendix A curves, the Case III convergence study."""
+from .appendix import SCENE as APPENDIX
+from .case3_convergence import SCENE as CASE3_CONVERGENCE
+from .tables import TABLES
+
+SCENES = [*TABLES, APPENDIX, CASE3_CONVERGENCE]

@@ -1,0 +1,5 @@
+"""Rahman (1991), the generalized slider crank: section 3.1's example and the claims of
+section 3.2."""
+from .example import SCENE as EXAMPLE
+
+SCENES = [EXAMPLE]

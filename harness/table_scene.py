@@ -1,0 +1,112 @@
+"""A table scene: one published table, the inputs the engines run with, how each engine
+produces the table in the published table's columns; its ``write`` runs every engine, diffs
+each cell against the published table and the register, and writes the scene's report."""
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Callable
+
+import pandas as pd
+
+from . import readings, register as register_mod
+from .csv_output import write_csv
+from .diff import diff_scene, summary
+from .engines import ENGINES, PrintedProgramError
+from .published_tables import PublishedTable
+from .report import plot_scene, scene_report
+from .scene import Outcome, RunOptions
+
+
+@dataclass(frozen=True)
+class TableScene:
+    """A published table: the engines that produce it in its columns, the diff, the report."""
+    name: str
+    title: str
+    group: str                                   # see harness/scene.py
+    start: int
+    table: str                                   # harness/published/<table>.csv
+    columns: list[str]
+    key: str | tuple[str, ...]                   # the column(s) naming a row
+    inputs: str                                  # what the engines are run with, in words
+    printed: Callable[[], pd.DataFrame]
+    legacy: Callable[[], pd.DataFrame]
+    port: Callable[[Any], pd.DataFrame]          # quirks restricted to each listing's own (&)
+    quirks: tuple                                # the port's (printed, corrected) switch sets
+    notes: list[str] = field(default_factory=list)
+    rel_floor: float = 0.0                       # below it a non-matching cell is machine arithmetic ...
+    floor_id: str | None = None                  # ... as this register entry shows (measured)
+    #: more report sections: each writes its CSVs into the scene's folder, returns markdown
+    sections: tuple[Callable[["TableScene", PublishedTable, pd.DataFrame, Path], str], ...] = ()
+
+    @property
+    def keys(self) -> tuple[str, ...]:
+        return (self.key,) if isinstance(self.key, str) else tuple(self.key)
+
+    @property
+    def key_name(self) -> str:
+        return "/".join(self.keys)
+
+    @property
+    def values(self) -> list[str]:
+        """The numeric columns (every column but the key)."""
+        return [c for c in self.columns if c not in self.keys]
+
+    def run(self, engine: str) -> pd.DataFrame:
+        if engine == "printed":
+            return self.printed()
+        if engine == "legacy":
+            return self.legacy()
+        if engine == "port_printed":          # each program with its own listing's quirks
+            return self.port(self.quirks[0])
+        if engine == "port_corrected":
+            return self.port(self.quirks[1])
+        raise ValueError(f"unknown engine {engine!r}")
+
+    def write(self, out_dir: Path, options: RunOptions) -> Outcome:
+        """Every engine's table, the diff, the plots, the sections, the readings, the report,
+        into ``out_dir/<name>/``.  An engine that cannot run (``PrintedProgramError``) is
+        listed in ``failures`` and in the report; the other engines still run."""
+        begin = time.perf_counter()
+        register = register_mod.load()
+        published = PublishedTable.load(self.table)
+        target = out_dir / self.name
+        target.mkdir(parents=True, exist_ok=True)
+        published.text.to_csv(target / "published.csv", index=False)
+
+        results, timings, failures = {}, {}, []
+        for engine in ENGINES:
+            start = time.perf_counter()
+            try:
+                frame = self.run(engine)
+            except PrintedProgramError as exc:
+                failures.append(f"engine {engine} failed: {exc}")
+                continue
+            timings[engine] = time.perf_counter() - start
+            write_csv(frame, target / f"{engine}.csv", "%.9g")
+            results[engine] = frame
+
+        diff = diff_scene(self, published, results, register)
+        write_csv(diff, target / "diff.csv", "%.9g")
+        plots = plot_scene(self, published, results, target)
+        extra = "\n".join(f"**{f}**" for f in failures)
+        for section in self.sections:
+            text = section(self, published, diff, target)
+            extra += "\n\n" + text if text else ""
+        if readings.has_readings(self.table):      # an empty measurement says why it is empty
+            extra += "\n\n" + (readings.as_markdown(readings.measure(self.table)) if options.measure_readings else
+                                "## Reading alternatives\n\nNot measured (skipped on request: --skip-readings).")
+        (target / "report.md").write_text(scene_report(self, diff, timings, register, plots, extra))
+        counts = summary(diff)
+        return Outcome(self.name, self.title, counts_overview(counts, timings), time.perf_counter() - begin,
+                       counts=counts, failures=failures)
+
+
+def counts_overview(counts: pd.DataFrame, timings: dict[str, float]) -> list[str]:
+    """The run report's table: cells per engine and status, and each engine's seconds."""
+    lines = ["| engine | " + " | ".join(counts.columns) + " | seconds |",
+             "|---|" + "---|" * (len(counts.columns) + 1)]
+    for engine, row in counts.iterrows():
+        lines.append(f"| {engine} | " + " | ".join(str(v) for v in row) + f" | {timings.get(engine, float('nan')):.4f} |")
+    return lines

@@ -1,0 +1,4 @@
+"""The spatial slider-crank loop that both Rahman theses solve (1991: the method; 1996: its
+listing): :mod:`.newton`, the compiled dual-number Newton-Raphson of the loop closure
+M1 L2 L3 M4 = I and its rates.
+"""
