@@ -4,7 +4,8 @@ One subpackage per thesis: :mod:`.ali1977` (K.E.D. four-bar, Cases I-III), :mod:
 (CSSP balancing), :mod:`.rahman1991` (the generalized slider crank).  Shared by them:
 :mod:`.quirks` (the quirk-switch base), :mod:`.dual` (dual numbers), :mod:`.real4` (REAL*4
 storage), :mod:`.libm` (the C library's single-precision functions) and :mod:`.slider_crank`
-(the spatial slider-crank loop both Rahman theses solve).
+(the spatial slider-crank loop both Rahman theses solve: its inputs, first estimate, Newton
+kernel and exact kinematics).
 
 Each thesis's quirk set turns its listings' bugs on (``PRINTED``: the port reproduces the
 legacy FORTRAN) or off (``CORRECTED``: what the thesis meant), one named switch per bug.

@@ -20,7 +20,7 @@ import pandas as pd
 from ...checks import angles_deg
 from ...errors import AssemblyError, ConvergenceError, SingularPositionError
 from . import forces as gsc_forces, position, printed_rates as gsc_printed_rates, rates as gsc_rates
-from ..rahman1996.mechanics import kinematics
+from ..slider_crank.kinematics import kinematics
 from .data import GscInputs
 from .quirks import GSC_PRINTED, GscQuirks
 

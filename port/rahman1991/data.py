@@ -16,7 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...checks import parameter
-from ..rahman1996.data import CsspInputs
+from ..slider_crank.geometry import CsspInputs
 
 #: g (in/s^2), the example's weight density (lbf/in^3, "specific gravity d = 0.28")
 GRAVITY = 386.4
@@ -27,7 +27,7 @@ DENSITY = 0.28
 class GscInputs(CsspInputs):
     """One configuration of section 3.1: lengths and offsets (in), twist (deg), crank speed
     (rpm), constant input torque T1k (lbf*in), section radii r1, r2 and slider side r3 (in),
-    axial-motion ratio alpha of eq. (27) (0: S1 constant).  The 1996 program's inputs
+    axial-motion ratio alpha of eq. (27) (0: S1 constant).  The slider crank's inputs
     (``CsspInputs``) with the 1991 example's values and the 1991 additions."""
     a1: float = 12.0
     a2: float = 50.0

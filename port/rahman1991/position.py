@@ -25,8 +25,7 @@ import numpy as np
 from numba import njit
 
 from ..slider_crank import newton as kernel
-from ..rahman1996.data import Constants, CsspInputs
-from ..rahman1996.listing import initial_estimate
+from ..slider_crank.geometry import CsspInputs, LoopConstants, initial_estimate
 from .data import GscInputs
 
 DFP_ITERATIONS = 400
@@ -67,15 +66,15 @@ THESIS_1991 = NewtonSetup()
 BUILD_1996 = NewtonSetup(real4=True, printed_inverse=True, check_assembly=False)
 
 
-def constants(inputs: GscInputs, s1: float, real4: bool = False) -> Constants:
-    """The 1996 port's constants for this geometry (its mass data are not used here)."""
+def constants(inputs: GscInputs, s1: float, real4: bool = False) -> LoopConstants:
+    """The loop's constants for this geometry (REAL*4 as the 1996 build holds them, or double)."""
     geometry = _geometry_constants(inputs.a1, inputs.a2, inputs.a4, inputs.alpha4_deg, inputs.rpm, real4)
     return replace(geometry, s1=float(np.float32(s1)) if real4 else float(s1))
 
 
 @functools.lru_cache(maxsize=256)
-def _geometry_constants(a1: float, a2: float, a4: float, alpha4_deg: float, rpm: float, real4: bool) -> Constants:
-    return Constants.of(CsspInputs(a1=a1, a2=a2, a4=a4, alpha4_deg=alpha4_deg, s1=1.0, rpm=rpm), real4)
+def _geometry_constants(a1: float, a2: float, a4: float, alpha4_deg: float, rpm: float, real4: bool) -> LoopConstants:
+    return LoopConstants.of(CsspInputs(a1=a1, a2=a2, a4=a4, alpha4_deg=alpha4_deg, s1=1.0, rpm=rpm), real4)
 
 
 def assembles(inputs: GscInputs, theta1, s1) -> np.ndarray:
@@ -88,7 +87,7 @@ def assembles(inputs: GscInputs, theta1, s1) -> np.ndarray:
     return b * b - c >= 0.0
 
 
-def newton(theta1: float, q: np.ndarray, c: Constants, setup: NewtonSetup = THESIS_1991) -> tuple[np.ndarray, bool, int]:
+def newton(theta1: float, q: np.ndarray, c: LoopConstants, setup: NewtonSetup = THESIS_1991) -> tuple[np.ndarray, bool, int]:
     """The printed iteration from q (5,) at one crank angle (rad): (answer, converged, steps).
     Every |Delta| <= tol (c.newton_tol, 1e-7, unless the setup says) stops it, 150 steps
     (setup.max_iterations) fail it; a singular A'A or a non-finite step fails at once."""

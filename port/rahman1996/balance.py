@@ -22,7 +22,8 @@ import numpy as np
 from ...errors import QPError, SingularPositionError
 from . import qprog
 from .data import QP_EQUALITIES, QP_ROWS, Constants, CsspInputs, qp_constraints
-from .listing import Carry, initial_estimate, listing_pass, unit_loads
+from ..slider_crank.geometry import initial_estimate
+from .listing import Carry, listing_pass, unit_loads
 from .objective import UnitLoads, objective, position_forms, table_quantities
 from .quirks import CSSP_CORRECTED, CSSP_PRINTED, CsspQuirks
 

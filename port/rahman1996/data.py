@@ -8,12 +8,11 @@ it they are the decimal values.
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
 
-from ...checks import parameter
+from ..slider_crank.geometry import CsspInputs, LoopConstants, _single
 
 #: g (in/s^2) and the weights (lbf) of crank, connecting rod and slider
 GRAVITY = 386.4
@@ -38,57 +37,10 @@ QP_EQUALITIES = 3
 MASS_DECREASE = 0.05
 
 
-#: the fields of CsspInputs that must be positive
-POSITIVE = ("a1", "a2", "rpm")
-
-
 @dataclass(frozen=True)
-class CsspInputs:
-    """The example of section 5.2: lengths (in), ground twist (deg), crank speed (rpm)."""
-    a1: float = 2.0
-    a2: float = 8.0
-    a4: float = 1.0
-    alpha4_deg: float = 250.0
-    s1: float = 0.4
-    rpm: float = 3000.0
-
-    def __post_init__(self):
-        """Each field a real number (TypeError), finite, within linkrepro.checks.LARGEST, and
-        a1, a2, rpm positive (ValueError): the rules of the legacy face too."""
-        for name in ("a1", "a2", "a4", "alpha4_deg", "s1", "rpm"):
-            object.__setattr__(self, name, parameter(name, getattr(self, name), positive=name in POSITIVE))
-
-    @property
-    def omega(self) -> float:
-        """Crank speed (rad/s)."""
-        return self.rpm * 2.0 * math.pi / 60.0
-
-    @property
-    def alpha4(self) -> float:
-        """Ground twist (rad)."""
-        return math.radians(self.alpha4_deg)
-
-    @property
-    def k4(self) -> np.ndarray:
-        """Unit vector of the slider's travel (its joint moves along -k4 as s4 grows)."""
-        return np.array([0.0, math.sin(self.alpha4), math.cos(self.alpha4)])
-
-
-def _single(x, real4: bool) -> float:
-    """A REAL*4 literal or argument (as the listing holds it) or the exact value."""
-    return float(np.float32(x)) if real4 else float(x)
-
-
-@dataclass(frozen=True)
-class Constants:
-    """Every number the CSSP computation uses, as one precision regime holds it."""
-    a1: float
-    a2: float
-    a4: float
-    s1: float
-    alpha4: float              # rad
-    omega: float               # crank speed, rad/s
-    pi: float
+class Constants(LoopConstants):
+    """Every number the CSSP computation uses, as one precision regime holds it: the loop's
+    (``LoopConstants``) and the example's masses, inertias and QP data."""
     masses: tuple              # M1, M2, M3 (lb s^2/in)
     inertia_crank: tuple       # I1X, I1Y, I1Z about the CG (lb s^2 in)
     inertia_rod: tuple         # I2X, I2Y, I2Z
@@ -100,13 +52,11 @@ class Constants:
     bearing_length_sq: float   # BL**2
     a1_sq: float               # A1**2 (a REAL*4 square in the listing's C1, C2)
     qp_bounds: np.ndarray
-    newton_tol: float          # the listing's 0.0000001
 
     @classmethod
     def of(cls, inputs: CsspInputs, real4: bool) -> "Constants":
         s = lambda x: _single(x, real4)                                   # noqa: E731
-        pi = float(np.float32(4.0) * np.arctan(np.float32(1.0))) if real4 else math.pi
-        degrad = pi / 180.0
+        loop = LoopConstants.of(inputs, real4)
         g = s(GRAVITY)
         # M1=1.9/G: a single-precision division in the listing
         masses = tuple(float(np.float32(s(w)) / np.float32(g)) if real4 else w / g for w in WEIGHTS)
@@ -118,16 +68,13 @@ class Constants:
         point_masses = np.array([*[quarter[0]] * 3, masses[0] - 3 * quarter[0],
                                  *[quarter[1]] * 3, masses[1] - 3 * quarter[1], masses[2]])
         bl = s(BEARING_LENGTH)
-        # THT1D=6.0*RPM*DEGRAD: 6.0*RPM a REAL*4 product
-        omega = (float(np.float32(6.0) * np.float32(inputs.rpm)) if real4 else 6.0 * inputs.rpm) * degrad
-        return cls(a1=s(inputs.a1), a2=s(inputs.a2), a4=s(inputs.a4), s1=s(inputs.s1),
-                   alpha4=inputs.alpha4_deg * degrad, omega=omega, pi=pi, masses=masses,
+        return cls(**vars(loop), masses=masses,
                    inertia_crank=inertia_crank, inertia_rod=inertia_rod,
                    rod_radii_distal=tuple(s(k) for k in RADII_ROD_DISTAL), cg=CG_OFFSETS,
                    crank_arms=crank_arms, rod_arms=rod_arms, point_masses=point_masses,
                    bearing_length_sq=float(np.float32(bl) * np.float32(bl)) if real4 else bl * bl,
                    a1_sq=float(np.float32(inputs.a1) * np.float32(inputs.a1)) if real4 else inputs.a1 ** 2,
-                   qp_bounds=np.array([s(b) for b in QP_BOUNDS]), newton_tol=s(1e-7))
+                   qp_bounds=np.array([s(b) for b in QP_BOUNDS]))
 
 
 def _arms(inertia, m) -> tuple:

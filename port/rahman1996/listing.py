@@ -15,9 +15,6 @@ same answer); everything after it is vectorised.
 """
 from __future__ import annotations
 
-import ctypes
-import ctypes.util
-import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -110,28 +107,6 @@ def loop_operators(theta1, q: np.ndarray, c: Constants) -> tuple[DualMatrix, Dua
     operators = DualMatrix(np.stack([rot, eta_ops[0], rot, eta_ops[1], zero]),
                            np.stack([zero, zero, zero, zero, rot]))     # theta2 eta2 theta3 eta3 s4
     return carry @ operators @ carry.T, h5 @ _m4(q[..., 4], c)
-
-
-def _powf(x: np.float32, y: float) -> float:
-    """x**y for REAL*4 x as gfortran evaluates it: the C library's powf (not sqrtf: glibc's
-    powf(x, 0.5) can differ from the correctly rounded root by one REAL*4 unit)."""
-    return float(_LIBM.powf(float(x), y))
-
-
-_LIBM = ctypes.CDLL(ctypes.util.find_library("m"))
-_LIBM.powf.restype, _LIBM.powf.argtypes = ctypes.c_float, [ctypes.c_float, ctypes.c_float]
-
-
-def initial_estimate(c: Constants, real4: bool) -> np.ndarray:
-    """The listing's start: S4=(A2**2-(A1+A4)**2)**0.5 (REAL*4), THT2=PI-ATAN(S4/(A4+A1)),
-    THT3=2*PI-THT2, ETA2 = ETA3 = 0; NaN where the root is not real (the Newton refuses it)."""
-    kind = np.float32 if real4 else np.float64
-    a1, a2, a4 = (kind(v) for v in (c.a1, c.a2, c.a4))
-    with np.errstate(invalid="ignore", divide="ignore"):
-        square = a2 ** 2 - (a1 + a4) ** 2
-        s4 = _powf(square, 0.5) if real4 else float(square) ** 0.5 if square >= 0 else math.nan
-        theta2 = c.pi - math.atan(np.float64(s4) / np.float64(a4 + a1))   # A4+A1 a REAL*4 sum; the C library's atan
-    return np.array([theta2, 0.0, 2.0 * c.pi - theta2, 0.0, s4])
 
 
 @dataclass

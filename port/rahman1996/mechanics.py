@@ -5,18 +5,8 @@ numpy, vectorised over crank angles.  Units: inch, lbf, second; masses lbf*s^2/i
 in radians (degrees only in ``Geometry.alpha4_deg`` and in error messages).  Frame {1} is
 fixed; the crank turns about z1 at constant speed omega (theta1'' = 0).
 
-Geometry (eqs. 2.3, 2.4, 2.6).  Crank pin P = (a1 cos th1, a1 sin th1, s1); crank frame
-{2} at P with axes M1R = Rz(th1).  Slider point Q = (-a4, -s4 sin alpha4, -s4 cos alpha4):
-the slider moves along k4 = (0, sin alpha4, cos alpha4) without rotating.  |Q - P| = a2 is
-s4^2 + 2 b s4 + c = 0; we keep the root s4 = -b + sqrt(b^2 - c) at every angle: it is the
-one the listing's first estimate sqrt(a2^2 - (a1 + a4)^2) = 7.416 converges to at th1 = 0
-for the default data (7.544; the other root is -7.270).  The two roots meet only where
-b^2 = c, i.e. where the rod is perpendicular to k4 (the edge of assembly).
-Rod frame {3} at Q: R2 = M1R Rz(theta2) Ry(eta2) with first column u = (Q - P)/a2,
-theta2 in [0, 2 pi), cos(eta2) > 0.  The crank pin is read as a Hooke joint (axes k1 and
-M1R Rz(theta2) j): it fixes the rod's spin that the thesis neglects; the joint at Q is
-spherical.  Velocities and accelerations are exact: second-order Taylor jets
-(value, d/dt, d2/dt2) pushed through the position formulas.
+Geometry and exact kinematics: ``linkrepro.port.slider_crank.kinematics`` (shared with the
+1991 method).
 
 Mass model (section 2.2): each link by four point masses at the design distances of
 eq. 2.12 (m_i = M/4); the nine design variables x (eq. 4.4) are masses at fixed points, so
@@ -35,60 +25,8 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from ...errors import AssemblyError, SingularPositionError
-from .data import CsspInputs
 from ..dual import skew
-
-TINY = 1e-9  # relative distance to a singular position below which we refuse
-
-
-# ---- second-order jets: arrays whose axis 0 holds (value, d/dt, d2/dt2) ----
-def _bil(op, a, b):
-    """Jet of a bilinear product op(a, b) (Leibniz rule)."""
-    return np.stack([op(a[0], b[0]), op(a[1], b[0]) + op(a[0], b[1]),
-                     op(a[2], b[0]) + 2.0 * op(a[1], b[1]) + op(a[0], b[2])])
-
-
-def _mul(a, b):
-    return _bil(np.multiply, a, b)
-
-
-def _chain(a, f, df, ddf):
-    """Jet of f(a) for a scalar function f with derivatives df, ddf."""
-    return np.stack([f(a[0]), df(a[0]) * a[1], ddf(a[0]) * a[1] ** 2 + df(a[0]) * a[2]])
-
-
-def _cos(a):
-    return _chain(a, np.cos, lambda x: -np.sin(x), lambda x: -np.cos(x))
-
-
-def _sin(a):
-    return _chain(a, np.sin, np.cos, lambda x: -np.sin(x))
-
-
-def _sqrt(a):
-    return _chain(a, np.sqrt, lambda x: 0.5 / np.sqrt(x), lambda x: -0.25 * x ** -1.5)
-
-
-def _atan2(y, x):
-    """Jet of atan2(y, x)."""
-    r2 = x[0] ** 2 + y[0] ** 2
-    n1, n2 = x[0] * y[1] - y[0] * x[1], x[0] * y[2] - y[0] * x[2]
-    return np.stack([np.arctan2(y[0], x[0]), n1 / r2,
-                     n2 / r2 - 2.0 * n1 * (x[0] * x[1] + y[0] * y[1]) / r2 ** 2])
-
-
-def _matrix(rows):
-    """Stack a 3x3 nested list of jets (3, n) into a jet (3, n, 3, 3)."""
-    return np.stack([np.stack(row, axis=-1) for row in rows], axis=-2)
-
-
-def _rz(c, s, zero, one):
-    return _matrix([[c, -s, zero], [s, c, zero], [zero, zero, one]])
-
-
-#: link dimensions (in), ground twist (deg), crank offset (in), speed (rpm): the example's inputs
-Geometry = CsspInputs
+from ..slider_crank.kinematics import Geometry, _refuse, kinematics
 
 
 @dataclass(frozen=True)
@@ -137,65 +75,6 @@ class MassModel:
             centre = np.array([self.cg[link], 0.0, 0.0])
             pts[4 * link:4 * link + 4] = centre + np.stack([offsets, -offsets], axis=1)
         return pts
-
-
-def kinematics(geom: Geometry, theta1_rad, s1_jet=None) -> SimpleNamespace:
-    """Positions (in), velocities (in/s), accelerations (in/s^2) over crank angles (rad).
-
-    ``s1_jet``: the crank's axial offset S1 and its first two time derivatives (3, n), for a
-    crank that slides as it turns (Rahman 1991, eq. 28); by default the constant geom.s1.
-
-    Attributes X, Xd, Xdd for X in P, Q, s4, u, M1R, R2, theta2, eta2; w2, alpha2 (rad/s,
-    rad/s^2, rod angular velocity and acceleration); n2; ``jets`` holds them as (3, n, ...).
-    """
-    th = np.atleast_1d(np.asarray(theta1_rad, dtype=float))
-    deg, n = np.degrees(th), th.size
-    one, zero = np.zeros((3, n)), np.zeros((3, n))
-    one[0] = 1.0
-    t = np.stack([th, np.full(n, geom.omega), np.zeros(n)])
-    cth, sth = _cos(t), _sin(t)
-    sa, ca = np.sin(geom.alpha4), np.cos(geom.alpha4)
-    s1 = geom.s1 * one if s1_jet is None else np.asarray(s1_jet, dtype=float).reshape(3, n)
-    P = np.stack([geom.a1 * cth, geom.a1 * sth, s1], axis=-1)
-    b = geom.a1 * sa * sth + ca * s1
-    c = 2.0 * geom.a1 * geom.a4 * cth + _mul(s1, s1) + (geom.a4 ** 2 + geom.a1 ** 2 - geom.a2 ** 2) * one
-    disc = _mul(b, b) - c
-    if np.any(disc[0] < 0.0):
-        i = int(np.argmax(disc[0] < 0.0))
-        raise AssemblyError("CSSP: the rod cannot reach the slider line", float(deg[i]),
-                            discriminant=float(disc[0, i]))
-    _refuse(np.sqrt(disc[0]) / geom.a2, deg, "the rod is perpendicular to the slider axis")
-    s4 = _sqrt(disc) - b
-    Q = np.stack([-geom.a4 * one, -sa * s4, -ca * s4], axis=-1)
-    u = (Q - P) / geom.a2
-    vx, vy = _mul(cth, u[..., 0]) + _mul(sth, u[..., 1]), _mul(cth, u[..., 1]) - _mul(sth, u[..., 0])
-    rho2 = _mul(vx, vx) + _mul(vy, vy)
-    _refuse(np.sqrt(rho2[0]), deg, "the rod lies along the crank axis (Hooke joint locked)")
-    rho = _sqrt(rho2)   # = cos(eta2) > 0
-    theta2, eta2 = _atan2(vy, vx), _atan2(-u[..., 2], rho)
-    theta2[0] %= 2.0 * np.pi
-    M1R = _rz(cth, sth, zero, one)
-    A = _bil(np.matmul, M1R, _rz(_cos(theta2), _sin(theta2), zero, one))
-    ce, se = _cos(eta2), _sin(eta2)
-    R2 = _bil(np.matmul, A, _matrix([[ce, zero, se], [zero, one, zero], [-se, zero, ce]]))
-    e, k = A[..., :, 1], np.array([0.0, 0.0, 1.0])
-    kin = SimpleNamespace(theta1=th, omega=geom.omega, n2=-A[0, :, :, 0],
-                          w2=(geom.omega + theta2[1])[:, None] * k + eta2[1][:, None] * e[0],
-                          alpha2=theta2[2][:, None] * k + eta2[2][:, None] * e[0]
-                          + eta2[1][:, None] * e[1],
-                          jets=dict(P=P, Q=Q, s4=s4, u=u, M1R=M1R, R2=R2, theta2=theta2, eta2=eta2))
-    for name, jet in kin.jets.items():
-        for order, suffix in enumerate(("", "d", "dd")):
-            setattr(kin, name + suffix, jet[order])
-    return kin
-
-
-def _refuse(distance, deg, why):
-    """SingularPositionError at the first angle whose distance to the singularity is tiny."""
-    bad = distance <= TINY
-    if np.any(bad):
-        i = int(np.argmax(bad))
-        raise SingularPositionError(f"CSSP: {why}", float(deg[i]), distance=float(distance[i]))
 
 
 def _point_jets(model: MassModel, kin) -> np.ndarray:

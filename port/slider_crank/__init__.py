@@ -1,4 +1,5 @@
 """The spatial slider-crank loop that both Rahman theses solve (1991: the method; 1996: its
-listing): :mod:`.newton`, the compiled dual-number Newton-Raphson of the loop closure
-M1 L2 L3 M4 = I and its rates.
+listing): :mod:`.geometry` (the inputs, the loop's constants, the printed first estimate),
+:mod:`.newton` (the compiled dual-number Newton-Raphson of the loop closure M1 L2 L3 M4 = I
+and its rates) and :mod:`.kinematics` (the exact closed-loop kinematics, second-order jets).
 """

@@ -9,8 +9,8 @@ from linkrepro.errors import AssemblyError, ConvergenceError, SingularPositionEr
 from linkrepro.harness.scenes.rahman1991 import near_singular, planar_reference
 from linkrepro.harness.published_tables import PUBLISHED_DIR
 from linkrepro.port.rahman1991 import analysis as gsc, forces as gsc_forces, position
-from linkrepro.port.rahman1996.data import CsspInputs
-from linkrepro.port.rahman1996.mechanics import kinematics
+from linkrepro.port.slider_crank.geometry import CsspInputs
+from linkrepro.port.slider_crank.kinematics import kinematics
 from linkrepro.port.rahman1991.data import GscInputs, MassModel
 from linkrepro.port.rahman1991.quirks import GSC_CORRECTED, GSC_PRINTED
 

@@ -8,7 +8,8 @@ import numpy as np
 import pytest
 
 from linkrepro.errors import AssemblyError, SingularPositionError
-from linkrepro.port.rahman1996.mechanics import Geometry, MassModel, kinematics, kinetic_energy, unit_loads
+from linkrepro.port.rahman1996.mechanics import MassModel, kinetic_energy, unit_loads
+from linkrepro.port.slider_crank.kinematics import Geometry, kinematics
 
 DEG = np.r_[np.arange(0.0, 360.0, 5.0), 13.7, 101.3, 222.2, 333.3]
 TH = np.radians(DEG)

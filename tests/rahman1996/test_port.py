@@ -11,7 +11,8 @@ from linkrepro.harness.published_tables import PublishedTable
 from linkrepro.port.rahman1996.balance import CRANK_DEG, CsspInputs, _listing_motions, balance, hessian_shift, solve_qp
 from linkrepro.port.rahman1996.data import QP_EQUALITIES, QP_ROWS, Constants
 from linkrepro.port.rahman1996.listing import printed_inverse
-from linkrepro.port.rahman1996.mechanics import Geometry, MassModel, kinematics
+from linkrepro.port.rahman1996.mechanics import MassModel
+from linkrepro.port.slider_crank.kinematics import Geometry, kinematics
 from linkrepro.port.rahman1996.quirks import CSSP_CORRECTED
 
 

@@ -202,7 +202,8 @@ def legacy_on_grid(printed: pd.DataFrame) -> pd.DataFrame:
     both solved: largest |S4 difference| (in) and |theta2 difference| (deg)."""
     from ....legacy import rahman1996
     from ....port.rahman1996.data import Constants
-    from ....port.rahman1996.listing import initial_estimate, listing_pass
+    from ....port.rahman1996.listing import listing_pass
+    from ....port.slider_crank.geometry import initial_estimate
     rows = []
     for a4, al, s1 in itertools.product(gsc.GRID_A4, gsc.GRID_ALPHA4, gsc.GRID_S1):
         inputs = GscInputs(a4=a4, alpha4_deg=al, s1=s1)

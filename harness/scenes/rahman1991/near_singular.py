@@ -26,7 +26,7 @@ import pandas as pd
 
 from ....port.rahman1991 import analysis as gsc, position as gsc_position, printed_rates
 from ....port.rahman1991.analysis import ball_angles
-from ....port.rahman1996.mechanics import kinematics
+from ....port.slider_crank.kinematics import kinematics
 from ....port.rahman1991.data import GscInputs
 
 CONFIGS = [GscInputs(a4=10.0), GscInputs(a4=30.0, s1=3.5), GscInputs(a4=20.0, alpha4_deg=232.0)]
