@@ -26,3 +26,39 @@ def report_links(out_dir) -> list[str]:
     """The run report's lines about outputs of other commands (a thesis's ``report_links``,
     where it has one: ``linkrepro arithmetic``'s matrix for Rahman 1996)."""
     return [line for thesis in THESES for line in getattr(thesis, "report_links", lambda _: [])(out_dir)]
+
+
+def _bench_modules() -> list:
+    """Each thesis's ``bench`` module (its part of ``linkrepro bench``, see ``harness/bench.py``),
+    where it has one."""
+    modules = []
+    for thesis in THESES:
+        name = f"{thesis.__name__}.bench"
+        try:
+            modules.append(importlib.import_module(name))
+        except ModuleNotFoundError as err:
+            if err.name != name:
+                raise
+    return modules
+
+
+def _bench_hook(hook: str, quick: bool) -> list:
+    """What each thesis's ``bench.<hook>(quick)`` returns, thesis by thesis (none: nothing)."""
+    return [item for module in _bench_modules() for item in getattr(module, hook, lambda _: [])(quick)]
+
+
+def bench_computations(quick: bool) -> list:
+    """Part 1 of the bench: every thesis's ``Computation``s, timed on each engine (``quick``:
+    the reduced configuration)."""
+    return _bench_hook("computations", quick)
+
+
+def bench_knobs(quick: bool) -> list:
+    """Part 2 of the bench: every thesis's ``Knob``s (``quick``: the reduced configuration)."""
+    return _bench_hook("knobs", quick)
+
+
+def bench_sweeps(quick: bool) -> list:
+    """Part 2 of the bench: every thesis's ``Sweep``s, knobs measured by a study of their own
+    (``quick``: the reduced configuration)."""
+    return _bench_hook("sweeps", quick)

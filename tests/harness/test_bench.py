@@ -31,11 +31,6 @@ def test_pareto_front_single_and_dominating_points():
     assert bench.pareto_front([1.0, 1.0], [np.nan, 2.0]).tolist() == [False, True]
 
 
-def test_mprd_flops_count_multiply_adds():
-    assert bench.mprd(3, 8, 8) == 2 * 3 * 8 * 8
-    assert bench.KED_CASE1 == bench.KED_KINEMATICS + 384 + 144 + 18
-
-
 @pytest.mark.parametrize("knob", bench.knobs(quick=True), ids=lambda k: k.name)
 def test_reference_setting_has_zero_error(knob):
     rows = bench.knob_rows(knob, repeat=1)
