@@ -7,7 +7,7 @@ at the crank pin (P4 along, P5 across the link), the follower's at its pin (P6,
 along), the coupler's at the crank pin (P7, along the coupler).
 Masses are density * area * length (density in lbf/in^3, a weight).
 Units: inch, pound-force, second; degrees for ``deg``.  Arguments and errors as in
-``ked_case1`` (the density, like the section, is the listing's REAL*4 literal).
+``ali1977.case1`` (the density, like the section, is the listing's REAL*4 literal).
 """
 from __future__ import annotations
 
@@ -71,7 +71,7 @@ def joint_loads(mech, lengths: Lengths, density: float, area: float, quirks: Qui
 @njit(cache=True, error_model="numpy")
 def _joint_loads(acc, xaa, yaa, xba, yba, c2, s2, c3, s3, c4, s4, m1, m2, m3, m4, g_const, real4, components,
                  plus_m_a, coupler):
-    """joint_loads at each input angle (compiled as ked_case1's kernels are): the path point's
+    """joint_loads at each input angle (compiled as ali1977.case1's kernels are): the path point's
     XPA, YPA (in/s^2, REAL*4 with ``real4``), the pins' XAA..YBA, the cos and sin of t2, t3, t4,
     the links' weights m1..m4 (lbf), g (in/s^2) and the coupler's direction (joint_loads)."""
     loads = np.empty((c2.size, 8))

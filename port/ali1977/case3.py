@@ -13,7 +13,7 @@ a structural model: the extender is n beam segments in series (L2/n long), every
 node loads the whole structure, and the tip deflection is their superposition
 (unit-load method), each node carrying its own segment's weight density*area*L2/n.
 Units: inch, pound-force, second; degrees for ``deg``.  Arguments and errors as in
-``ked_case1``; ``n`` an integer 1..10000.  ``case3_linkage`` is the four-bar's motion over an
+``ali1977.case1``; ``n`` an integer 1..10000.  ``case3_linkage`` is the four-bar's motion over an
 angle grid, computed once; ``case3_on_linkage`` puts n nodes on it, for any n (the convergence
 study's sweep): ``case3_source`` is the two in one call.  The nodes' path points are computed
 a block of nodes at a time.

@@ -9,7 +9,7 @@ frame: 1F1 and 1T1 (about the origin of {1}) in {1}, 2F2 in {2} (the crank pin),
 velocities (33a), (36a), (32b), momenta and their rates (49a), (52a), (53a), (54), (57),
 (58), the dual Euler vectors (59)-(61), and the solution (69a)-(69q) with the iterative
 correction (69h)-(69k).  ``corrected_forces`` solves Newton-Euler for the exact, closed loop
-(``cssp_mechanics.kinematics``), spin-free rod, centres of mass on the links, action equal to
+(``slider_crank.kinematics.kinematics``), spin-free rod, centres of mass on the links, action equal to
 reaction, and the crank's axial (thrust) force as an unknown.  Sign convention of both: each
 vector is the load the link nearer the crank exerts at that joint (1F1, 1T1: the crank on the
 frame; 2F2: the crank on the rod; 3F3: the rod on the slider; 4F4, 4T4: the slider on the
@@ -97,7 +97,7 @@ def printed_forces(inputs: GscInputs, theta1, q, rates, accel, com_beyond_joint:
 
 
 def corrected_forces(inputs: GscInputs, kin, strict: bool = True) -> dict:
-    """Newton-Euler in {1} for the closed loop ``kin`` (``cssp_mechanics.kinematics``).
+    """Newton-Euler in {1} for the closed loop ``kin`` (``slider_crank.kinematics.kinematics``).
 
     Crank: turns at constant speed about k1 (no inertia moment about its centre of mass);
     rod: spin-free (omega = u x u'), so its moment about the centre of mass is

@@ -3,7 +3,7 @@
 The printed method: Newton-Raphson on the dual-number loop closure M1 L2 L3 M4 = I
 (eqs. 5-26): six equations, five joint variables q = (theta2, eta2, theta3, eta3, S4), the
 step Delta = (A'A)^-1 A' V.  The 1996 program by the same author runs exactly this
-iteration; its compiled kernel (``spatial_newton.newton``, equal to the legacy build bit
+iteration; its compiled kernel (``slider_crank.newton.newton``, equal to the legacy build bit
 for bit) serves here too, with the 1996 program's stopping rule (every |Delta| <= 1e-7, at
 most 150 steps), since the 1991 thesis gives none, and A'A solved by LU with pivoting (the
 thesis prints no inverse).  When Newton fails at a position that follows a

@@ -2,9 +2,9 @@
 
 ``GSC_PRINTED`` (all on) runs the thesis as printed; ``GSC_CORRECTED`` (all off) what it
 means.  ``five_variable_loop`` decides the model: on, the printed displacement analysis and
-force equations run (``gsc_position``, ``gsc_forces.printed_forces``) and the switches marked
+force equations run (``rahman1991.position``, ``rahman1991.forces.printed_forces``) and the switches marked
 [printed] fix them one at a time; off, the exact closed loop with a spin-free rod and
-Newton-Euler (``cssp_mechanics.kinematics``, ``gsc_forces.corrected_forces``) runs.
+Newton-Euler (``slider_crank.kinematics.kinematics``, ``rahman1991.forces.corrected_forces``) runs.
 """
 from __future__ import annotations
 

@@ -4,7 +4,7 @@ The thesis equates the forward- and backward-path dual velocities of the rod (eq
 linear equations (37a)-(37f) in the five rates (theta2', theta3', eta2', eta3', S4'), matrix
 system (38).  It then solves them by hand into closed forms (39)-(43), (38a)-(42a) with
 s(theta3) and s(theta2) s(theta3) in the denominators, which is what loses digits near the
-dead centres (``gsc_printed_rates``).  Here the same six equations are solved by least
+dead centres (``rahman1991.printed_rates``).  Here the same six equations are solved by least
 squares (QR, numpy.linalg.lstsq): velocities from M(q) q' = b(q), accelerations from
 M q'' = b' - M' q', with M' and b' taken exactly by a complex step along q' (M and b are
 analytic).  Row 6 uses eq. (37f); the printed matrix (38) drops a factor s(eta2) there

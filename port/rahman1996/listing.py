@@ -10,7 +10,7 @@ reactions of the listing's equations (the 1991 method, eqs. 62-69).  Every quirk
 Units: inch, lbf, second, radians.  Arrays are over crank positions (n), point masses
 (9) and components (3).  The Newton iteration is sequential (each position starts from
 the previous one's answer, as printed) and compiled in the listing's order of operations
-(``spatial_newton``: it is chaotic where it wanders, so only the same roundings give the
+(``slider_crank.newton``: it is chaotic where it wanders, so only the same roundings give the
 same answer); everything after it is vectorised.
 """
 from __future__ import annotations
@@ -130,7 +130,7 @@ class Motion:
 def listing_pass(crank_deg: np.ndarray, q0: np.ndarray, c: Constants, printed: bool = True) -> Motion:
     """One pass of the listing's DO 400 loop over the crank angles (deg): at each, the
     printed Newton from the last answer, then the rates by VM, VV and AV (constant crank
-    speed), compiled in the listing's order of operations (``spatial_newton``).
+    speed), compiled in the listing's order of operations (``slider_crank.newton``).
 
     Raises where the listing STOPs, at the same crank angle: ConvergenceError after 150
     Newton evaluations, SingularPositionError when INVERSE meets a zero pivot (in the

@@ -169,9 +169,9 @@ def kinetic_energy(geom: Geometry, model: MassModel, theta1_rad, x) -> np.ndarra
 
 
 def closed_loop_loads(c, theta1_rad):
-    """This model's loads in the form the objective takes (``cssp_objective.UnitLoads``).
+    """This model's loads in the form the objective takes (``rahman1996.objective.UnitLoads``).
 
-    ``c``: a ``cssp_data.Constants`` (lengths, speed, masses as one precision holds them).
+    ``c``: a ``rahman1996.data.Constants`` (lengths, speed, masses as one precision holds them).
     Bearing moments: M1 without its z-component (T0), M2 of the Hooke joint, M3 = 0 of the
     ball joint, M4 of the slider's guide.
     """

@@ -1,7 +1,7 @@
 """The quantities of Tables 5.2-5.7 and the objective of eqs. (4.2)-(4.3), from unit loads.
 
 Every inertia-induced force and moment is linear in the nine point masses x (eq. 4.4),
-so each model (the listing's, ``cssp_listing``; the closed-loop one, ``cssp_mechanics``)
+so each model (the listing's, ``rahman1996.listing``; the closed-loop one, ``rahman1996.mechanics``)
 gives them per unit of each x_k: ``UnitLoads``.  From those this module builds the
 per-position quadratic form F (x'Fx = G at one position), the shaking force, shaking
 moment, bearing force, bearing torque and input torque for any masses x.

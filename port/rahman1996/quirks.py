@@ -2,9 +2,9 @@
 
 ``CSSP_PRINTED`` (all on) makes the port reproduce the legacy build; ``CSSP_CORRECTED``
 (all off) computes what the thesis means.  ``open_loop_model`` decides the model:
-on, the listing's own kinematics and reaction equations run (``cssp_listing``) and the
+on, the listing's own kinematics and reaction equations run (``rahman1996.listing``) and the
 switches marked [listing] fix its formulas one at a time; off, the closed-loop
-Newton-Euler model runs (``cssp_mechanics``), where only the switches marked [both]
+Newton-Euler model runs (``rahman1996.mechanics``), where only the switches marked [both]
 (the objective's and the tables' definitions, and REAL*4) still apply.
 """
 from __future__ import annotations

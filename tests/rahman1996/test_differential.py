@@ -159,7 +159,7 @@ def example_1991(draw):
 
 
 def assert_1991_method_is_the_build(inputs: GscInputs) -> str:
-    """The 1991 method's Newton (gsc_position), run in the 1996 build's arithmetic (REAL*4
+    """The 1991 method's Newton (rahman1991.position), run in the 1996 build's arithmetic (REAL*4
     inputs, the listing's INVERSE, 10-deg steps, no DFP fallback), gives the build's first-pass
     positions bit for bit; where the build fails in its first pass, the 1991 sweep stops at the
     same crank angle.  (The build can also fail later, in its rates, second pass or QP: then the

@@ -1,4 +1,4 @@
-"""The corrected CSSP mechanics (port/cssp_mechanics.py) against independent computations.
+"""The corrected CSSP mechanics (port/rahman1996.mechanics.py) against independent computations.
 
 The reference here rebuilds the positions from scratch (another closure formula, the rod
 frame from cross products, the point masses from the thesis's numbers) and differentiates

@@ -18,18 +18,18 @@ from ....port.slider_crank.geometry import CsspInputs
 from ....port.slider_crank.kinematics import kinematics
 from ...bench import TRANSCENDENTAL, Computation, Knob, crank_grid, step_label, relative_error, mprd
 
-#: one step of the spatial Newton (spatial_newton.newton): sin, cos of five angles, 13 dual
+#: one step of the spatial Newton (slider_crank.newton.newton): sin, cos of five angles, 13 dual
 #: 3x3 products (three products and a sum each), ~60 for the entries; A'A, its 5x5 inverse
 #: (2 n^3), (A'A)^-1 A', Delta
 NEWTON_STEP = (10 * TRANSCENDENTAL + 13 * (3 * mprd(3, 3, 3) + 9) + 60 + mprd(5, 6, 5) + 2 * 5 ** 3
                + mprd(5, 5, 6) + mprd(5, 6, 1))
-#: the listing's DOT, DDOT (spatial_newton.rates): six sin/cos, the pseudo-inverse of VM, two
+#: the listing's DOT, DDOT (slider_crank.newton.rates): six sin/cos, the pseudo-inverse of VM, two
 #: products, ~120 for VV and AV
 NEWTON_RATES = 6 * TRANSCENDENTAL + mprd(5, 6, 5) + 2 * 5 ** 3 + mprd(5, 5, 6) + 2 * mprd(5, 6, 1) + 120
-#: the closed loop with second-order jets (cssp_mechanics.kinematics): ~10 sin/cos/sqrt/atan2,
+#: the closed loop with second-order jets (slider_crank.kinematics.kinematics): ~10 sin/cos/sqrt/atan2,
 #: ~60 jet operations of 9 flops, R2 as two 3x3 products of jets
 CLOSED_LOOP = 10 * TRANSCENDENTAL + 60 * 9 + 2 * 27 * 9 * 2
-#: the corrected Newton-Euler of the 1991 model (gsc_forces.corrected_forces): ~12 cross
+#: the corrected Newton-Euler of the 1991 model (rahman1991.forces.corrected_forces): ~12 cross
 #: products, ~150 more
 GSC_FORCES = 12 * 9 + 150
 
