@@ -11,12 +11,13 @@ alone (from PRINTED) moves that cell beyond its half unit: measured, per cell.
 """
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
 import pandas as pd
 
 from .published_tables import PublishedTable
 from .register import Deviation, by_quirk
-from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
     from .table_scene import TableScene
@@ -24,7 +25,7 @@ if TYPE_CHECKING:
 STATUSES = ("match", "registered", "unexplained", "not-produced")
 
 
-def quirk_effects(scene: "TableScene", published: PublishedTable, base: pd.DataFrame) -> dict[str, pd.DataFrame]:
+def quirk_effects(scene: TableScene, published: PublishedTable, base: pd.DataFrame) -> dict[str, pd.DataFrame]:
     """For each quirk: a boolean frame, True where switching it off alone moves a cell
     of the PRINTED port by more than that cell's half unit."""
     half = published.half_unit
@@ -37,7 +38,7 @@ def quirk_effects(scene: "TableScene", published: PublishedTable, base: pd.DataF
     return effects
 
 
-def diff_scene(scene: "TableScene", published: PublishedTable, results: dict[str, pd.DataFrame],
+def diff_scene(scene: TableScene, published: PublishedTable, results: dict[str, pd.DataFrame],
                register: dict[str, Deviation]) -> pd.DataFrame:
     """Long table: one row per (engine, published cell)."""
     pub_val, pub_text, half = published.values, published.text, published.half_unit

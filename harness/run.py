@@ -14,7 +14,7 @@ import pandas as pd
 
 from . import progress, readings
 from .scene import Outcome, RunOptions
-from .scenes import SCENES, get, report_links
+from .scenes import SCENES, TABLES, get, report_links
 
 
 class OutputFolderError(OSError):
@@ -160,7 +160,7 @@ def reproduce(names: list[str] | None, out_dir: Path, measure_readings: bool = T
     out_dir = Path(out_dir)
     check_output_folder(out_dir, names)
     if measure_readings:
-        readings.require_compiler({name: get(name).table for name in names if hasattr(get(name), "table")})
+        readings.require_compiler({name: TABLES[name].table for name in names if name in TABLES})
     start = time.perf_counter()
     with progress.Bar(len(names)):
         results = _run_groups(_groups(names), out_dir, RunOptions(measure_readings))

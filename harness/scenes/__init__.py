@@ -6,6 +6,7 @@ from __future__ import annotations
 import importlib
 import pkgutil
 
+from ..scene import Scene
 from ..table_scene import TableScene
 
 THESES = [importlib.import_module(f"{__name__}.{module.name}")
@@ -15,7 +16,7 @@ SCENES = {scene.name: scene for thesis in THESES for scene in thesis.SCENES}
 TABLES = {name: scene for name, scene in SCENES.items() if isinstance(scene, TableScene)}
 
 
-def get(name: str):
+def get(name: str) -> Scene:
     try:
         return SCENES[name]
     except KeyError:

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..slider_crank.geometry import CsspInputs, LoopConstants, _single
+from ..slider_crank.geometry import CsspInputs, LoopConstants, single
 
 #: g (in/s^2) and the weights (lbf) of crank, connecting rod and slider
 GRAVITY = 386.4
@@ -55,7 +55,7 @@ class Constants(LoopConstants):
 
     @classmethod
     def of(cls, inputs: CsspInputs, real4: bool) -> "Constants":
-        s = lambda x: _single(x, real4)                                   # noqa: E731
+        s = lambda x: single(x, real4)                                   # noqa: E731
         loop = LoopConstants.of(inputs, real4)
         g = s(GRAVITY)
         # M1=1.9/G: a single-precision division in the listing

@@ -55,7 +55,7 @@ class CsspInputs:
         return np.array([0.0, math.sin(self.alpha4), math.cos(self.alpha4)])
 
 
-def _single(x, real4: bool) -> float:
+def single(x, real4: bool) -> float:
     """A REAL*4 literal or argument (as the listing holds it) or the exact value."""
     return float(np.float32(x)) if real4 else float(x)
 
@@ -74,7 +74,7 @@ class LoopConstants:
 
     @classmethod
     def of(cls, inputs: CsspInputs, real4: bool) -> "LoopConstants":
-        s = lambda x: _single(x, real4)                                   # noqa: E731
+        s = lambda x: single(x, real4)                                   # noqa: E731
         pi = float(np.float32(4.0) * np.arctan(np.float32(1.0))) if real4 else math.pi
         degrad = pi / 180.0
         # THT1D=6.0*RPM*DEGRAD: 6.0*RPM a REAL*4 product
