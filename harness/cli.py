@@ -62,7 +62,7 @@ def _parser() -> tuple[_Parser, dict[str, _Parser]]:
     parser = _Parser(prog=PROG, description=(
         "Rebuild, port and diff the FORTRAN of three mechanism-dynamics theses."),
         epilog="Exit status: 0 done, 1 a run failed, 2 a usage error, 130 interrupted.")
-    sub = parser.add_subparsers(dest="command", required=True, metavar="{reproduce,scenes,bench,arithmetic}")
+    sub = parser.add_subparsers(dest="command", required=True, metavar="{reproduce,scenes,explain,bench,arithmetic}")
     rep = sub.add_parser("reproduce", help="run every engine of the scenes and write the report")
     rep.add_argument("scenes", nargs="*", help="scene names (default: all; see `linkrepro scenes`)")
     rep.add_argument("--out", default=Path("out"), type=_out_folder,
@@ -70,6 +70,14 @@ def _parser() -> tuple[_Parser, dict[str, _Parser]]:
     rep.add_argument("--skip-readings", action="store_true",
                      help="do not measure the OCR readings (they rebuild the listings with gfortran)")
     scenes = sub.add_parser("scenes", help="list the scenes")
+    explain = sub.add_parser("explain", help="one published cell's trail: the published value, every engine's "
+                             "value and status, the register entries, the listing lines behind it")
+    explain.add_argument("scene", help="a table scene (see `linkrepro scenes`), e.g. ali1977-table1")
+    explain.add_argument("row", help="the row as printed in the table's first column(s), e.g. 160 or crank/i_xx")
+    explain.add_argument("column", help="the column, e.g. src_dx (the scene's report lists them)")
+    explain.add_argument("--out", default=Path("out"), type=_out_folder,
+                         help="a run's output folder to read the diff from (default: out/); where it has no "
+                              "diff for the scene, the scene's engines are run now")
     bench = sub.add_parser("bench", help="time each engine against its error: cost per position against "
                            "legacy and a flop-count limit, and speed against error for each knob")
     bench.add_argument("--repeat", type=_repeat, default=10,
@@ -85,7 +93,7 @@ def _parser() -> tuple[_Parser, dict[str, _Parser]]:
     arith.add_argument("--out", default=Path("out/arithmetic"), type=_out_folder,
                        help="output folder for arithmetic.md, arithmetic.csv, arithmetic_cells.csv "
                             "(default: out/arithmetic/, which reproduce's report links)")
-    return parser, {"reproduce": rep, "scenes": scenes, "bench": bench, "arithmetic": arith}
+    return parser, {"reproduce": rep, "scenes": scenes, "explain": explain, "bench": bench, "arithmetic": arith}
 
 
 def _scene_titles() -> dict[str, str]:
@@ -148,6 +156,30 @@ def _reproduce(args: argparse.Namespace, parser: _Parser) -> int:
     return 0
 
 
+def _explain(args: argparse.Namespace, parser: _Parser) -> int:
+    """``linkrepro explain SCENE ROW COLUMN``: the cell's trail printed; an unknown scene, row or
+    column is a usage error (status 2); an engine that cannot run, status 1."""
+    from .scenes import TABLES
+    if args.scene not in TABLES:
+        known = list(TABLES)
+        if args.scene in _scene_titles():
+            parser.error(f"scene {args.scene!r} has no published table to explain; table scenes: {', '.join(known)}")
+        parser.error(_unknown_scenes([args.scene], known))
+    from .engines import PrintedProgramError
+    from .trail import CellNotFound, as_text, cell_trail, read_diff
+    scene = TABLES[args.scene]
+    try:
+        diff = read_diff(scene, args.out)
+        text = as_text(cell_trail(scene, args.row, args.column, diff))
+    except CellNotFound as exc:
+        parser.error(str(exc))
+    except PrintedProgramError as exc:
+        _error(str(exc))
+        return 1
+    _out(text)
+    return 0
+
+
 def _write_outputs(out: Path, outputs, writer: str, job, failures: tuple = ()) -> int:
     """A command that writes ``outputs`` into ``out``: the folder checked writable before the
     work (status 2); a failure in ``failures`` or a failed write after it, status 1; the
@@ -201,6 +233,8 @@ def _main(argv: list[str] | None) -> int:
         return 0
     if args.command == "reproduce":
         return _reproduce(args, commands["reproduce"])
+    if args.command == "explain":
+        return _explain(args, commands["explain"])
     if args.command == "bench":
         return _bench(args)
     if args.command == "arithmetic":

@@ -84,12 +84,19 @@ def scan_config(listing: str, root: Path = ROOT) -> dict:
 
 def scan_lines(listing: str, root: Path = ROOT) -> list[str]:
     """The scan's text of the listing with what is not the listing's dropped (module docstring)."""
-    numbered = scan_config(listing, root).get("numbered", False)
+    return [line for _, line in numbered_scan_lines(listing, root)]
+
+
+def numbered_scan_lines(listing: str, root: Path = ROOT) -> list[tuple[int, str]]:
+    """``scan_lines`` with the seed line number each line comes from (the ``.txt`` holds the
+    seed lines of the ``.toml``'s ranges, one after another)."""
+    config = scan_config(listing, root)
+    numbers = [n for first, last in config["lines"] for n in range(first, last + 1)]
     lines = []
-    for line in _scan(listing, root, ".txt").read_text().splitlines():
+    for number, line in zip(numbers, _scan(listing, root, ".txt").read_text().splitlines()):
         if _FENCE.match(line) or not line.strip():
             continue
-        lines.append(_WATFIV_NUMBER.sub("", line) if numbered else line)
+        lines.append((number, _WATFIV_NUMBER.sub("", line) if config.get("numbered", False) else line))
     return lines
 
 

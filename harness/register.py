@@ -40,6 +40,7 @@ class Deviation:
     certainty: str | None = None
     cells: tuple = ()
     moves: dict = field(default_factory=dict)     # scene -> columns the quirk moves
+    readings: tuple = ()                          # {file, chosen, scan}: the scan's text put back
 
 
 def load(path: Path = REGISTER_PATH) -> dict[str, Deviation]:
@@ -61,7 +62,7 @@ def load(path: Path = REGISTER_PATH) -> dict[str, Deviation]:
             id=raw["id"], kind=raw["kind"], title=raw["title"], where=raw["where"],
             printed=raw["printed"], meant=raw["meant"], evidence=raw["evidence"],
             effect=raw["effect"], quirk=raw.get("quirk"), certainty=raw.get("certainty"),
-            cells=cells, moves=dict(raw.get("moves", {})))
+            cells=cells, moves=dict(raw.get("moves", {})), readings=tuple(raw.get("reading", [])))
     return entries
 
 

@@ -14,6 +14,7 @@ from . import readings, register as register_mod
 from .csv_output import write_csv
 from .diff import diff_scene, summary
 from .engines import ENGINES, PrintedProgramError
+from .listing_lines import Statement
 from .published_tables import PublishedTable
 from .report import plot_scene, scene_report
 from .scene import Outcome, RunOptions
@@ -39,6 +40,8 @@ class TableScene:
     floor_id: str | None = None                  # ... as this register entry shows (measured)
     #: more report sections: each writes its CSVs into the scene's folder, returns markdown
     sections: tuple[Callable[["TableScene", PublishedTable, pd.DataFrame, Path], str], ...] = ()
+    #: where the listings compute or write a cell: (row key as printed, column) -> Statements
+    statements: Callable[[str, str], tuple[Statement, ...]] = lambda row, column: ()
 
     @property
     def keys(self) -> tuple[str, ...]:
@@ -64,17 +67,11 @@ class TableScene:
             return self.port(self.quirks[1])
         raise ValueError(f"unknown engine {engine!r}")
 
-    def write(self, out_dir: Path, options: RunOptions) -> Outcome:
-        """Every engine's table, the diff, the plots, the sections, the readings, the report,
-        into ``out_dir/<name>/``.  An engine that cannot run (``PrintedProgramError``) is
-        listed in ``failures`` and in the report; the other engines still run."""
-        begin = time.perf_counter()
+    def compute(self) -> Computed:
+        """Every engine's table and the diff against the published table.  An engine that cannot
+        run (``PrintedProgramError``) is listed in ``failures``; the other engines still run."""
         register = register_mod.load()
         published = PublishedTable.load(self.table)
-        target = out_dir / self.name
-        target.mkdir(parents=True, exist_ok=True)
-        published.text.to_csv(target / "published.csv", index=False)
-
         results, timings, failures = {}, {}, []
         for engine in ENGINES:
             start = time.perf_counter()
@@ -84,12 +81,23 @@ class TableScene:
                 failures.append(f"engine {engine} failed: {exc}")
                 continue
             timings[engine] = time.perf_counter() - start
-            write_csv(frame, target / f"{engine}.csv", "%.9g")
             results[engine] = frame
+        return Computed(published, results, timings, failures, diff_scene(self, published, results, register))
 
-        diff = diff_scene(self, published, results, register)
+    def write(self, out_dir: Path, options: RunOptions) -> Outcome:
+        """Every engine's table, the diff, the plots, the sections, the readings, the report,
+        into ``out_dir/<name>/``; a failed engine is in ``failures`` and in the report."""
+        begin = time.perf_counter()
+        register = register_mod.load()
+        target = out_dir / self.name
+        target.mkdir(parents=True, exist_ok=True)
+        done = self.compute()
+        published, diff, timings, failures = done.published, done.diff, done.timings, done.failures
+        published.text.to_csv(target / "published.csv", index=False)
+        for engine, frame in done.results.items():
+            write_csv(frame, target / f"{engine}.csv", "%.9g")
         write_csv(diff, target / "diff.csv", "%.9g")
-        plots = plot_scene(self, published, results, target)
+        plots = plot_scene(self, published, done.results, target)
         extra = "\n".join(f"**{f}**" for f in failures)
         for section in self.sections:
             text = section(self, published, diff, target)
@@ -101,6 +109,17 @@ class TableScene:
         counts = summary(diff)
         return Outcome(self.name, self.title, counts_overview(counts, timings), time.perf_counter() - begin,
                        counts=counts, failures=failures)
+
+
+@dataclass(frozen=True)
+class Computed:
+    """What ``TableScene.compute`` gives: the published table, each engine's table (the engines
+    that ran), their wall times (s), what failed, the long diff (``diff.diff_scene``)."""
+    published: PublishedTable
+    results: dict[str, pd.DataFrame]
+    timings: dict[str, float]
+    failures: list[str]
+    diff: pd.DataFrame
 
 
 def counts_overview(counts: pd.DataFrame, timings: dict[str, float]) -> list[str]:

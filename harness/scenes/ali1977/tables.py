@@ -16,6 +16,7 @@ from ....port.ali1977.case3 import LISTING as CASE3_LISTING
 from ....port.ali1977.case3 import case3_cognate, case3_source
 from ...csv_output import write_csv
 from ...engines import run_printed
+from ...listing_lines import Statement
 from ...published_tables import PublishedTable
 from ...table_scene import TableScene
 from . import cognate_search, sums
@@ -98,6 +99,49 @@ def cognate_section(scene: TableScene, published: PublishedTable, diff: pd.DataF
     return cognate_search.as_markdown(found)
 
 
+def _lines(file: str, printed: tuple[str, ...] = (), src: tuple[str, ...] = ()) -> tuple[Statement, ...]:
+    return (tuple(Statement("printed", file + ".f", p) for p in printed)
+            + tuple(Statement("src", file + ".f", p) for p in src))
+
+
+def ked_statements(rigid: str, source: tuple, cognate: tuple):
+    """Where a K.E.D. table's cells come from: ``rigid`` the listing whose XP, YP give the rigid
+    path; ``source``, ``cognate``: (listing, {"dx"|"dy": (printed patterns, src patterns)}).
+    A K.E.D. coordinate is rigid + deflection, summed by the harness as the thesis sums them."""
+    by_column = {f"rigid_{axis}": _lines(rigid, (rf"^\s+{axis.upper()}P=",), (rf"{axis.upper()}PO\(IANG\)={axis.upper()}P\b",))
+                 for axis in "xy"}
+    for prefix, (listing, patterns) in (("src", source), ("cog", cognate)):
+        for axis in "xy":
+            deflection = _lines(listing, *patterns[f"d{axis}"])
+            by_column[f"{prefix}_d{axis}"] = deflection
+            by_column[f"{prefix}_{axis}new"] = by_column[f"rigid_{axis}"] + deflection
+    return lambda row, column: by_column.get(column, ())
+
+
+def _written(var: str, write: str, printed_set: bool = True, src_set: bool = False) -> tuple:
+    """(printed patterns, src patterns) of a deflection ``var`` (XX, CYY, ...) set from R(k)
+    and written by FORMAT ``write``; the src copy hands it over in ``<var>O(IANG)``."""
+    axis = {"X": 1, "Y": 2}[var[-1]]
+    setting = (rf"^\s+{var}=R\({axis}\)",)
+    return ((setting if printed_set else ()) + (rf"WRITE ?\(6,{write}\)",),
+            (setting if src_set else ()) + (rf"{var}O\(IANG\)={var}\b",))
+
+
+CASE3_SOURCE_LINES = ((r"WRITE\(6,500\)",), (r"DEF\(I,IANG\)=R\(I\)",))
+TABLE_STATEMENTS = {
+    "ali1977_table1": ked_statements("ali1977_case1_cognate",
+                                     ("ali1977_case1_source", {"dx": _written("XX", "200"), "dy": _written("YY", "200")}),
+                                     ("ali1977_case1_cognate", {"dx": _written("CXX", "200"), "dy": _written("CYY", "200")})),
+    "ali1977_table2": ked_statements("ali1977_case2_source",
+                                     ("ali1977_case2_source", {"dx": _written("XX", "200"), "dy": _written("YY", "200")}),
+                                     ("ali1977_case2_cognate", {"dx": _written("CXX", "200", False, True),
+                                                                "dy": _written("CYY", "200", False, True)})),
+    "ali1977_table3": ked_statements("ali1977_case3_source",
+                                     ("ali1977_case3_source", {"dx": CASE3_SOURCE_LINES, "dy": CASE3_SOURCE_LINES}),
+                                     ("ali1977_case3_cognate", {"dx": ((), _written("CXX", "200", True, True)[1]),
+                                                                "dy": ((), _written("CYY", "200", True, True)[1])})),
+}
+
 #: the process the Ali (1977) tables and curves share
 GROUP, START = "ali1977", 1
 COMMON_INPUTS = ("L1=10, L2=10, L3=30, L4=25, L5=30 in; A=0.1963495408 in^2, E=1e7 psi, "
@@ -110,6 +154,7 @@ ALI1977_TABLE1 = TableScene(
     start=START,
     table="ali1977_table1",
     columns=KED_COLUMNS,
+    statements=TABLE_STATEMENTS["ali1977_table1"],
     key="input_deg",
     inputs=(COMMON_INPUTS + "W=2 lbf at the path point. "
             "Source columns: the source listing as printed (400 rpm, ALP=1.762782545 rad = 101 deg). "
@@ -133,6 +178,7 @@ ALI1977_TABLE2 = TableScene(
     start=START,
     table="ali1977_table2",
     columns=KED_COLUMNS,
+    statements=TABLE_STATEMENTS["ali1977_table2"],
     key="input_deg",
     inputs=(COMMON_INPUTS + "300 rpm, ALP=PI/3; each link's weight 0.098 lbf/in^3 * A * length "
             "lumped at a joint (Appendix C). Rigid and source columns: the Case II source listing. "
@@ -154,6 +200,7 @@ ALI1977_TABLE3 = TableScene(
     start=START,
     table="ali1977_table3",
     columns=KED_COLUMNS,
+    statements=TABLE_STATEMENTS["ali1977_table3"],
     key="input_deg",
     inputs=(COMMON_INPUTS + "300 rpm, ALP=PI/3; the extender's weight at 5 nodes (Appendix D). "
             "Rigid and source columns: the Case III source listing (the only program Appendix D "

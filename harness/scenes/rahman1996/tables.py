@@ -18,6 +18,7 @@ from ....legacy.rahman1996 import CSSP_COLUMNS, INERTIA_ROWS
 from ....port.rahman1996.balance import CRANK_DEG, CsspInputs, balance
 from ....port.rahman1996.quirks import CSSP_CORRECTED, CSSP_PRINTED
 from ...engines import PrintedProgramError, run_program
+from ...listing_lines import Statement
 from ...table_scene import TableScene
 
 PROGRAM = "rahman1996_cssp_main"
@@ -103,6 +104,32 @@ def port_tables(quirks) -> dict[str, pd.DataFrame]:
     return as_tables(balance(CsspInputs(), quirks=quirks))
 
 
+#: each series table's variables in the listing: before, after (TABLE(J,k) in the src copy)
+SERIES_VARIABLES = {"5_2": ("OBJFUN", "NUOBJFUN"), "5_3": ("shf", "nushf"), "5_4": ("sht", "nusht"),
+                    "5_5": ("brf", "nubrf"), "5_6": ("brt", "nubrt"), "5_7": ("int", "nuint")}
+
+
+def statements(table: str):
+    """Where the listing computes a cell of ``table`` (printed/, the main program) and where the
+    src copy hands it to Python (``TABLE(J,k)=`` or ``INERT(i,j)=``, the D053 edit)."""
+    main = "rahman1996_cssp_main.f"
+
+    def lines(variable: str, handed: str) -> tuple[Statement, ...]:
+        return (Statement("printed", main, rf"(?i)^\s+{variable}="),
+                Statement("src", main, rf"(?i)^\s+{handed}={variable}\s"))
+
+    def where(row: str, column: str) -> tuple[Statement, ...]:
+        after = column == "after"
+        if table == "5_1":
+            link, quantity = row.split("/")
+            variable = ("NU" if after else "") + f"I{1 if link == 'crank' else 2}{quantity[-1].upper()}"
+            index = INERTIA_ROWS.index((link, quantity)) + 1
+            return lines(variable, rf"INERT\({index},{2 if after else 1}\)")
+        variable = SERIES_VARIABLES[table][after]
+        return lines(variable, rf"TABLE\(J,{CSSP_COLUMNS.index((table, column)) + 1}\)")
+    return where
+
+
 #: the process the Rahman (1996) scenes share (one run of each engine gives every table); it
 #: starts last, when the Newton kernels it shares with Rahman (1991) are compiled
 GROUP, START = "rahman1996", 3
@@ -117,6 +144,7 @@ def _scene(table: str) -> TableScene:
         start=START,
         table=f"rahman1996_table{table}",
         columns=INERTIA_COLUMNS if inertia else SERIES_COLUMNS,
+        statements=statements(table),
         key=("link", "quantity") if inertia else "crank_deg",
         inputs=INPUTS,
         printed=lambda: printed_tables()[table],

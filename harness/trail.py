@@ -1,0 +1,164 @@
+"""A published cell's trail: what the thesis printed, what every engine gives and with what
+status, the register entries that explain a difference, the listing lines behind the cell.
+
+``cell_trail(scene, row, column, diff)`` gathers it from a table scene's diff (``diff.csv`` of
+a run, or ``compute_diff``); ``linkrepro explain`` prints it and the HTML report shows it.
+"""
+from __future__ import annotations
+
+import math
+import textwrap
+from dataclasses import dataclass
+from pathlib import Path
+
+import pandas as pd
+
+from . import listing_lines, register as register_mod
+from .engines import ENGINES
+from .listing_lines import ListingLine
+from .published_tables import PUBLISHED_DIR
+from .register import Deviation
+from .table_scene import TableScene
+
+
+class CellNotFound(LookupError):
+    """A row or column that the scene's published table does not have."""
+
+
+@dataclass(frozen=True)
+class EngineCell:
+    """One engine's value of a cell: ``difference`` = value - published (the table's unit),
+    ``digits`` agreed with the published value (``agreed_digits``), NaN when not produced."""
+    engine: str
+    value: float
+    status: str
+    difference: float
+    digits: float
+    register_ids: tuple[str, ...]
+
+
+@dataclass(frozen=True)
+class Trail:
+    scene: TableScene
+    row: str
+    column: str
+    published_text: str
+    published: float
+    half_unit: float
+    source: str                                  # where the thesis prints the table
+    engines: tuple[EngineCell, ...]
+    entries: tuple[Deviation, ...]               # every entry any engine's status names
+    statements: tuple[ListingLine, ...]          # where the listings compute or write the cell
+
+    def cited(self, entry: Deviation) -> list[ListingLine]:
+        return listing_lines.cited(entry)
+
+    def edits(self, entry: Deviation) -> list[ListingLine]:
+        return listing_lines.tagged(entry.id)
+
+
+def agreed_digits(value: float, published: float) -> float:
+    """Significant digits two numbers share: -log10 of their relative difference (inf when
+    equal, NaN when ``value`` is NaN; a published zero counts the difference itself)."""
+    if math.isnan(value):
+        return math.nan
+    error = abs(value - published)
+    if error == 0.0:
+        return math.inf
+    return max(0.0, -math.log10(error / abs(published) if published else error))
+
+
+def printed_digits(text: str) -> int:
+    """Significant digits of a number as printed ("-0.238" 3, "1.946666E-04" 7)."""
+    mantissa = text.strip().upper().partition("E")[0].lstrip("+-").replace(".", "")
+    return len(mantissa.lstrip("0")) or 1
+
+
+def published_source(table: str) -> str:
+    """The published CSV's first comment: where the thesis prints the table (seed lines)."""
+    for line in (PUBLISHED_DIR / f"{table}.csv").read_text().splitlines():
+        if line.startswith("#"):
+            return line.lstrip("# ").strip()
+    return f"harness/published/{table}.csv"
+
+
+def same_row(key, row: str) -> bool:
+    """Whether a diff row's key (a number or ``link/quantity`` text) names ``row``."""
+    try:
+        return float(key) == float(row)
+    except (TypeError, ValueError):
+        return str(key) == str(row)
+
+
+def cell_trail(scene: TableScene, row: str, column: str, diff: pd.DataFrame,
+               register: dict[str, Deviation] | None = None) -> Trail:
+    """The trail of the cell (``row``: the key as printed, e.g. ``160`` or ``crank/i_xx``)."""
+    register = register if register is not None else register_mod.load()
+    if column not in scene.values:
+        raise CellNotFound(f"{scene.name} has no column {column!r}; its columns: {', '.join(scene.values)}")
+    keys = diff[scene.key_name]
+    cell = diff[(diff["column"] == column) & keys.map(lambda k: same_row(k, row))]
+    if cell.empty:
+        rows = ", ".join(dict.fromkeys(str(k) for k in keys))
+        raise CellNotFound(f"{scene.name} has no row {row!r}; its rows ({scene.key_name}): {rows}")
+    engines, ids = [], []
+    for engine in ENGINES:
+        found = cell[cell["engine"] == engine]
+        if found.empty:
+            continue
+        r = found.iloc[0]
+        names = tuple(str(r["register_ids"]).split()) if isinstance(r["register_ids"], str) else ()
+        ids += names
+        engines.append(EngineCell(engine, float(r["value"]), str(r["status"]), float(r["value"]) - float(r["published"]),
+                                  agreed_digits(float(r["value"]), float(r["published"])), names))
+    first = cell.iloc[0]
+    key = str(first[scene.key_name])
+    statements = [line for statement in scene.statements(key, column) for line in listing_lines.find(statement)]
+    return Trail(scene, key, column, str(first["published_text"]), float(first["published"]),
+                 float(first["half_unit"]), published_source(scene.table), tuple(engines),
+                 tuple(register[i] for i in dict.fromkeys(ids) if i in register), tuple(statements))
+
+
+def read_diff(scene: TableScene, out_dir: Path | None) -> pd.DataFrame:
+    """The scene's diff: ``out_dir/<scene>/diff.csv`` when a run wrote it, else computed now
+    (every engine run: seconds to a minute)."""
+    path = Path(out_dir) / scene.name / "diff.csv" if out_dir is not None else None
+    if path is not None and path.is_file():
+        return pd.read_csv(path, keep_default_na=True, dtype={"published_text": str, "register_ids": str})
+    return scene.compute().diff
+
+
+def _number(value: float) -> str:
+    return "not produced" if math.isnan(value) else f"{value:.9g}"
+
+
+def _digits(value: float) -> str:
+    return "-" if math.isnan(value) else "all" if math.isinf(value) else f"{value:.1f}"
+
+
+def as_text(trail: Trail, edits_shown: int = 6, width: int = 100) -> str:
+    """The trail for a terminal: published cell, engines, entries, listing lines."""
+    scene = trail.scene
+    out = [f"{scene.name}  {scene.key_name} = {trail.row}  column {trail.column}", f"  {scene.title}", "",
+           f"published  {trail.published_text}  (+/- {trail.half_unit:g}, {printed_digits(trail.published_text)} "
+           f"significant digits; {trail.source})", "",
+           f"  {'engine':15s} {'value':>16s} {'- published':>12s} {'digits':>6s}  status",]
+    for e in trail.engines:
+        ids = f"  ({' '.join(e.register_ids)})" if e.register_ids else ""
+        diff = "" if math.isnan(e.value) else f"{e.difference:+.3g}"
+        out.append(f"  {e.engine:15s} {_number(e.value):>16s} {diff:>12s} {_digits(e.digits):>6s}  {e.status}{ids}")
+    out += ["", "listing lines behind the cell:"]
+    out += [f"  {line.where()}\n      {line.text.strip()}" for line in trail.statements] or ["  (none named)"]
+    for entry in trail.entries:
+        out += ["", f"{entry.id}  {entry.kind}{', ' + entry.certainty if entry.certainty else ''}: {entry.title}"]
+        out += [textwrap.fill(getattr(entry, field), width, initial_indent=f"  {field + ':':10s}",
+                              subsequent_indent=" " * 12, break_on_hyphens=False)
+                for field in ("where", "printed", "meant", "evidence", "effect")]
+        if entry.quirk:
+            out.append(f"  port quirk: {entry.quirk}")
+        out += [f"  printed line {line.where()}\n      {line.text.strip()}" for line in trail.cited(entry)]
+        edits = trail.edits(entry)
+        out += [f"  edit in {line.where()}\n      {line.text.strip()}" for line in edits[:edits_shown]]
+        if len(edits) > edits_shown:
+            out.append(f"  ... and {len(edits) - edits_shown} more lines of legacy/src tagged {entry.id}")
+    return "\n".join(out)
