@@ -1,5 +1,5 @@
 # linkrepro: `make reproduce` and `make test` each set up a fresh Debian machine first
-# (gfortran from apt if missing, a .venv, the package installed into it), then run.
+# (gfortran and chromium from apt if missing, a .venv, the package installed into it), then run.
 PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
@@ -9,13 +9,14 @@ SOURCES := pyproject.toml meson.build $(shell find legacy port harness package -
 
 reproduce: $(VENV)/.installed
 	$(BIN)/linkrepro arithmetic --out out/arithmetic > /dev/null
+	$(BIN)/linkrepro bench --repeat 3 --out out/bench > /dev/null
 	$(BIN)/linkrepro reproduce --out out
 
 test: $(VENV)/.installed
 	$(BIN)/python -m pytest -q -n auto tests
 
 bench: $(VENV)/.installed
-	$(BIN)/linkrepro bench
+	$(BIN)/linkrepro bench --out out/bench
 
 fuzz: $(VENV)/.installed
 	$(BIN)/python -m linkrepro.harness.fuzz --calls 10000 --seed 0 --timeout 20 --out out/fuzz.json
@@ -29,6 +30,11 @@ $(VENV)/.installed: $(SOURCES)
 	  echo "gfortran not found: installing it from Debian's packages"; \
 	  SUDO=$$( [ "$$(id -u)" = 0 ] || echo sudo ); \
 	  $$SUDO apt-get update -qq && $$SUDO apt-get install -y -qq gfortran; }
+	@command -v chromedriver >/dev/null 2>&1 || { \
+	  echo "chromium not found: installing it from Debian's packages (for the report's browser test)"; \
+	  SUDO=$$( [ "$$(id -u)" = 0 ] || echo sudo ); \
+	  { $$SUDO apt-get update -qq && $$SUDO apt-get install -y -qq chromium chromium-driver >/dev/null; } || \
+	  echo "chromium could not be installed: the browser test will be skipped"; }
 	@test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install -q --upgrade pip
 	$(BIN)/python -m pip install -q ".[test]"

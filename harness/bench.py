@@ -305,8 +305,10 @@ def plot(frame: pd.DataFrame, path: Path) -> None:
         ax.yaxis.set_minor_formatter(NullFormatter())
         ax.tick_params(axis="x", which="both", labelsize=6, labelrotation=40)
         ax.set_title(name, fontsize=9)
-        ax.set_xlabel("seconds (one call)")
-        ax.set_ylabel(f"error ({g.error_unit.iloc[0]})")
+        unit = g.error_unit.iloc[0]
+        ax.set_xlabel("wall time of one call (s)")
+        ax.set_ylabel("relative error against the reference" if unit == "relative"
+                      else f"error against the reference ({unit})")
         ax.grid(alpha=0.3, which="both")
     for ax in list(axes.flat)[len(groups):]:
         ax.axis("off")

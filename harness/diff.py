@@ -11,6 +11,7 @@ alone (from PRINTED) moves that cell beyond its half unit: measured, per cell.
 """
 from __future__ import annotations
 
+import math
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -23,6 +24,17 @@ if TYPE_CHECKING:
     from .table_scene import TableScene
 
 STATUSES = ("match", "registered", "unexplained", "not-produced")
+
+
+def agreed_digits(value: float, published: float) -> float:
+    """Significant digits two numbers share: -log10 of their relative difference (inf when
+    equal, NaN when ``value`` is NaN; a published zero counts the difference itself)."""
+    if math.isnan(value):
+        return math.nan
+    error = abs(value - published)
+    if error == 0.0:
+        return math.inf
+    return max(0.0, -math.log10(error / abs(published) if published else error))
 
 
 def quirk_effects(scene: TableScene, published: PublishedTable, base: pd.DataFrame) -> dict[str, pd.DataFrame]:
@@ -76,7 +88,8 @@ def diff_scene(scene: TableScene, published: PublishedTable, results: dict[str, 
                     status = "unexplained"
                 rows.append({"scene": scene.name, "engine": engine, scene.key_name: key, "column": col,
                              "published_text": pub_text.at[i, col], "published": target,
-                             "value": value, "abs_diff": err, "half_unit": tol, "status": status,
+                             "value": value, "abs_diff": err, "digits": agreed_digits(value, target),
+                             "half_unit": tol, "status": status,
                              "register_ids": " ".join(sorted(set(ids))) if status != "match" else "",
                              "legacy": ref, "diff_vs_legacy": value - ref})
     return pd.DataFrame(rows)

@@ -23,7 +23,8 @@ Usage::
     python -m linkrepro.harness.fuzz --calls 10000 --seed 0 --timeout 20 --out out/fuzz.json
     python -m linkrepro.harness.fuzz --replay "ali1977.loc(1, 1, nan, 1, 0)"
 
-The same seed gives the same calls.  The exit status is 1 when there are findings.
+The same seed gives the same calls.  The exit status is 1 when there are findings.  A
+progress line on standard error when it is a terminal (else a line every 1000 calls).
 """
 from __future__ import annotations
 
@@ -48,6 +49,8 @@ import traceback
 import warnings
 from dataclasses import dataclass, field
 from typing import Callable
+
+from .progress import Bar
 
 FINDINGS = ("untyped", "nan", "angle", "accepted", "crash", "hang")
 OUTCOMES = ("ok", "typed") + FINDINGS
@@ -651,7 +654,8 @@ class Worker:
 
 
 def run(jobs: list, timeout: float = 20.0, workers: int = 2, progress=None) -> list:
-    """Run the jobs on ``workers`` persistent processes; one result dict per job, in order."""
+    """Run the jobs on ``workers`` persistent processes; one result dict per job, in order.
+    ``progress(done, total)``: called after each call."""
     for var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "NUMBA_NUM_THREADS"):
         os.environ.setdefault(var, "1")
     ctx = multiprocessing.get_context("spawn")
@@ -677,7 +681,7 @@ def run(jobs: list, timeout: float = 20.0, workers: int = 2, progress=None) -> l
                 if replace:
                     w.stop(kill=True)
                     pool[k] = Worker(ctx, os.path.join(logs, f"worker{k}-{done}.log")).wait_ready()
-                if progress and done % 1000 == 0:
+                if progress:
                     progress(done, len(jobs))
     finally:
         for w in pool:
@@ -825,6 +829,15 @@ def replay(text: str) -> int:
     return 0
 
 
+def _shown(bar: Bar) -> Callable[[int, int], None]:
+    """After each call: the progress line on a terminal (stderr); else a line every 1000 calls."""
+    def step(done: int, total: int) -> None:
+        bar.done("fuzz")
+        if not bar.active and done % 1000 == 0:
+            print(f"  {done}/{total} calls", file=sys.stderr, flush=True)
+    return step
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="python -m linkrepro.harness.fuzz", description=__doc__.split("\n")[0])
     parser.add_argument("--calls", type=int, default=10_000)
@@ -838,8 +851,9 @@ def main(argv=None) -> int:
     args = parser.parse_args(argv)
     if args.replay:
         return replay(args.replay)
-    report = fuzz(args.calls, args.seed, args.timeout, args.workers, args.only,
-                  progress=lambda d, n: print(f"  {d}/{n} calls", file=sys.stderr, flush=True))
+    with Bar(args.calls) as bar:
+        bar.note("fuzz", "starting the workers (importing linkrepro)")
+        report = fuzz(args.calls, args.seed, args.timeout, args.workers, args.only, progress=_shown(bar))
     print(format_report(report, args.all))
     if args.out:
         write_report(report, args.out)

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import multiprocessing
 import os
+import textwrap
 from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
@@ -11,6 +12,7 @@ import pandas as pd
 from matplotlib.figure import Figure
 
 from .diff import column_max, summary
+from .quantities import describe
 from .register import Deviation
 
 STYLE = {"published": dict(marker="o", ls="none", color="k", ms=4),
@@ -32,15 +34,38 @@ def markdown_table(frame: pd.DataFrame, floatfmt: str = "{:.3g}") -> str:
 
 
 def plot_scene(scene, published, results: dict[str, pd.DataFrame], outdir: Path) -> list[Path]:
-    """One PNG per quantity: published points and every engine against the key column."""
+    """One figure for the table, ``<scene>/table.png``: small multiples, one axes per column, the
+    published points over every engine's curve against the key column (its words and unit)."""
     if not isinstance(scene.key, str):
         return []                          # rows named by text (Table 5.1): the CSVs say it all
-    frames, jobs = {"published": published.values, **results}, []
-    for col in scene.values:
-        curves = [(frame[scene.key].to_numpy(), frame[col].to_numpy(), engine, STYLE.get(engine, {}))
-                  for engine, frame in frames.items() if engine == "published" or frame[col].notna().any()]
-        jobs.append((curves, scene.key, f"{col} (in)", f"{scene.name}: {col}", outdir / f"{col}.png"))
-    return draw_all(curve_figure, jobs)
+    frames = {"published": published.values, **results}
+    columns = len(scene.values)
+    across = min(columns, 4)
+    down = -(-columns // across)
+    fig = Figure(figsize=(3.3 * across, 2.35 * down + 0.85))
+    axes = fig.subplots(down, across, squeeze=False, sharex=True)
+    key = describe(scene.name, scene.key)
+    for ax, col in zip(axes.flat, scene.values):
+        what = describe(scene.name, col)
+        for engine, frame in frames.items():
+            if engine == "published" or frame[col].notna().any():
+                ax.plot(frame[scene.key].to_numpy(), frame[col].to_numpy(), label=engine, **STYLE.get(engine, {}))
+        ax.set_title(textwrap.fill(what.words, 40), fontsize=7.5)
+        ax.set_ylabel(what.unit, fontsize=8)
+        ax.tick_params(labelsize=7)
+        ax.grid(alpha=0.3)
+    for ax in axes.flat[columns:]:
+        ax.set_visible(False)
+    for ax in axes.flat[max(0, columns - across):columns]:        # the lowest axes of each column
+        ax.set_xlabel(key.label, fontsize=8)
+        ax.xaxis.set_tick_params(labelbottom=True)
+    legend = {label: handle for ax in axes.flat for handle, label in zip(*ax.get_legend_handles_labels())}
+    height = 2.35 * down + 0.85
+    fig.suptitle(scene.title, fontsize=9, y=1 - 0.08 / height, va="top")
+    fig.legend(list(legend.values()), list(legend), loc="upper center", ncol=len(legend), fontsize=8,
+               frameon=False, bbox_to_anchor=(0.5, 1 - 0.3 / height))
+    return [save_png(fig, outdir / "table.png", left=0.6 / (3.3 * across), right=0.99, bottom=0.5 / height,
+                     top=1 - 0.85 / height, hspace=0.6, wspace=0.3)]
 
 
 def curve_figure(curves: list[tuple], xlabel: str, ylabel: str, title: str, path: Path) -> Path:
@@ -132,6 +157,6 @@ def scene_report(scene, diff: pd.DataFrame, timings: dict[str, float], register:
                              "{:.6g}"))
     if extra:
         out += ["", extra]
-    out += ["", "## Plots", ""] + [f"![{p.stem}]({p.name})" for p in plots]
+    out += ["", "## Plot", ""] + [f"![{p.stem}]({p.name})" for p in plots]
     out += ["", "## Register entries involved", ""] + [render_entry(register[i]) + "\n" for i in ids if i in register]
     return "\n".join(out) + "\n"

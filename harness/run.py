@@ -12,7 +12,7 @@ from queue import Empty
 
 import pandas as pd
 
-from . import progress, readings
+from . import html_report, progress, readings
 from .scene import Outcome, RunOptions
 from .scenes import SCENES, TABLES, get, report_links
 
@@ -53,8 +53,9 @@ def check_output_folder(out_dir: Path, names: list[str]) -> None:
     for name in names:
         if (out_dir / name).exists() and not (out_dir / name).is_dir():
             raise OutputFolderError(f"{out_dir / name} is a file; the run writes the scene's folder there")
-    if (out_dir / "report.md").is_dir():
-        raise OutputFolderError(f"{out_dir / 'report.md'} is a folder; the run writes a file there")
+    for report in ("report.md", "report.html"):
+        if (out_dir / report).is_dir():
+            raise OutputFolderError(f"{out_dir / report} is a folder; the run writes a file there")
 
 
 IN_POOL_ENV = "LINKREPRO_IN_POOL"
@@ -154,7 +155,8 @@ def reproduce(names: list[str] | None, out_dir: Path, measure_readings: bool = T
 
     Before any work: ``OutputFolderError`` if DIR cannot be written, ``readings.CompilerError``
     if the OCR readings need gfortran and it is missing (``measure_readings=False`` skips
-    them).  After the run, if an engine could not run: ``RunFailedError`` (everything else
+    them).  DIR/report.html is the same report as one page (``harness/html_report.py``), with
+    ``linkrepro bench``'s figures where DIR/bench holds them.  After the run, if an engine could not run: ``RunFailedError`` (everything else
     is written, the failures are in the reports)."""
     names = list(dict.fromkeys(names or SCENES))
     out_dir = Path(out_dir)
@@ -179,6 +181,7 @@ def reproduce(names: list[str] | None, out_dir: Path, measure_readings: bool = T
         lines += ["## Failures", "", *[f"- **{failure}**" for failure in failures], ""]
     lines.append(f"Total wall time of this reproduce run: {time.perf_counter() - start:.2f} s.")
     (out_dir / "report.md").write_text("\n".join(lines) + "\n")
+    html_report.write(out_dir, done, out_dir / "bench")
     if failures:
         raise RunFailedError(failures, done, out_dir)
     return done

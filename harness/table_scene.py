@@ -91,9 +91,9 @@ class TableScene:
         register = register_mod.load()
         target = out_dir / self.name
         target.mkdir(parents=True, exist_ok=True)
+        PublishedTable.load(self.table).text.to_csv(target / "published.csv", index=False)  # unwritable: fail first
         done = self.compute()
         published, diff, timings, failures = done.published, done.diff, done.timings, done.failures
-        published.text.to_csv(target / "published.csv", index=False)
         for engine, frame in done.results.items():
             write_csv(frame, target / f"{engine}.csv", "%.9g")
         write_csv(diff, target / "diff.csv", "%.9g")

@@ -27,8 +27,9 @@ class CellNotFound(LookupError):
 
 @dataclass(frozen=True)
 class EngineCell:
-    """One engine's value of a cell: ``difference`` = value - published (the table's unit),
-    ``digits`` agreed with the published value (``agreed_digits``), NaN when not produced."""
+    """One engine's value of a cell: ``difference`` = |value - published| (the table's unit) and
+    the ``digits`` agreed with the published value (``diff.agreed_digits``), at full precision
+    (as ``diff.csv`` gives them); NaN when not produced."""
     engine: str
     value: float
     status: str
@@ -55,17 +56,6 @@ class Trail:
 
     def edits(self, entry: Deviation) -> list[ListingLine]:
         return listing_lines.tagged(entry.id)
-
-
-def agreed_digits(value: float, published: float) -> float:
-    """Significant digits two numbers share: -log10 of their relative difference (inf when
-    equal, NaN when ``value`` is NaN; a published zero counts the difference itself)."""
-    if math.isnan(value):
-        return math.nan
-    error = abs(value - published)
-    if error == 0.0:
-        return math.inf
-    return max(0.0, -math.log10(error / abs(published) if published else error))
 
 
 def printed_digits(text: str) -> int:
@@ -109,8 +99,8 @@ def cell_trail(scene: TableScene, row: str, column: str, diff: pd.DataFrame,
         r = found.iloc[0]
         names = tuple(str(r["register_ids"]).split()) if isinstance(r["register_ids"], str) else ()
         ids += names
-        engines.append(EngineCell(engine, float(r["value"]), str(r["status"]), float(r["value"]) - float(r["published"]),
-                                  agreed_digits(float(r["value"]), float(r["published"])), names))
+        engines.append(EngineCell(engine, float(r["value"]), str(r["status"]), float(r["abs_diff"]),
+                                  float(r["digits"]), names))
     first = cell.iloc[0]
     key = str(first[scene.key_name])
     statements = [line for statement in scene.statements(key, column) for line in listing_lines.find(statement)]
@@ -142,11 +132,11 @@ def as_text(trail: Trail, edits_shown: int = 6, width: int = 100) -> str:
     out = [f"{scene.name}  {scene.key_name} = {trail.row}  column {trail.column}", f"  {scene.title}", "",
            f"published  {trail.published_text}  (+/- {trail.half_unit:g}, {printed_digits(trail.published_text)} "
            f"significant digits; {trail.source})", "",
-           f"  {'engine':15s} {'value':>16s} {'- published':>12s} {'digits':>6s}  status",]
+           f"  {'engine':15s} {'value':>16s} {'|- published|':>13s} {'digits':>6s}  status"]
     for e in trail.engines:
         ids = f"  ({' '.join(e.register_ids)})" if e.register_ids else ""
-        diff = "" if math.isnan(e.value) else f"{e.difference:+.3g}"
-        out.append(f"  {e.engine:15s} {_number(e.value):>16s} {diff:>12s} {_digits(e.digits):>6s}  {e.status}{ids}")
+        diff = "" if math.isnan(e.value) else f"{e.difference:.3g}"
+        out.append(f"  {e.engine:15s} {_number(e.value):>16s} {diff:>13s} {_digits(e.digits):>6s}  {e.status}{ids}")
     out += ["", "listing lines behind the cell:"]
     out += [f"  {line.where()}\n      {line.text.strip()}" for line in trail.statements] or ["  (none named)"]
     for entry in trail.entries:

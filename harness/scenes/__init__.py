@@ -1,6 +1,7 @@
 """Every scene, found by thesis: each subpackage here is one thesis and lists its scenes in
-``SCENES`` (see ``harness/scene.py`` for the protocol).  Adding a thesis is adding a
-subpackage; nothing here names one."""
+``SCENES`` (see ``harness/scene.py`` for the protocol) and describes their CSVs' columns in
+``QUANTITIES`` (see ``harness/quantities.py``).  Adding a thesis is adding a subpackage;
+nothing here names one."""
 from __future__ import annotations
 
 import importlib

@@ -89,8 +89,9 @@ def test_cli_reproduce_writes_every_file(tmp_path):
         frame = pd.read_csv(target / f"{name}.csv")
         if name != "diff":
             assert list(frame.columns) == SCENES["ali1977-table1"].columns
-    assert (target / "report.md").read_text().count("![") == 10
-    assert (tmp_path / "report.md").exists()
+    assert (target / "report.md").read_text().count("![table](table.png)") == 1      # one figure per table
+    assert (target / "table.png").exists() and not (target / "src_dx.png").exists()
+    assert (tmp_path / "report.md").exists() and (tmp_path / "report.html").exists()
 
 
 def test_cli_rejects_unknown_scene():

@@ -2,6 +2,8 @@
 Appendix A curves, the Case III convergence study."""
 from .appendix import SCENE as APPENDIX
 from .case3_convergence import SCENE as CASE3_CONVERGENCE
+from .quantities import QUANTITIES
 from .tables import TABLES
 
 SCENES = [*TABLES, APPENDIX, CASE3_CONVERGENCE]
+__all__ = ["SCENES", "TABLES", "QUANTITIES"]

@@ -22,6 +22,7 @@ from ....port.ali1977.case3 import LISTING as CASE3
 from ....port.ali1977.case3 import case3_cognate, case3_source
 from ...report import curve_figure, draw_all
 from ...scene import ReportScene
+from .quantities import CURVES as QUANTITIES, KED
 from .tables import GROUP, START
 
 NAME = "ali1977-appendixA"
@@ -46,8 +47,6 @@ CURVES = {
     ("III", "cognate"): (lambda rpm: ali1977.case3_cognate(rpm=rpm, step_deg=STEP),
                          lambda rpm: case3_cognate(DEG, rpm=rpm, quirks=CASE3_COG)),
 }
-QUANTITIES = {"dx": "elastic X displacement of P (in)", "dy": "elastic Y displacement of P (in)",
-              "rot": "elastic rotation in Z (rad)"}
 
 
 def run(out_dir: Path) -> dict:
@@ -87,8 +86,8 @@ def _plot(curves: pd.DataFrame, target: Path) -> list[Path]:
         lines = [(g["input_deg"].to_numpy(), g["value"].to_numpy(), f"{engine}, {rpm:g} rpm",
                   dict(ls="-", lw=1.5) if engine == "legacy" else dict(ls="--", lw=1.0, color="k"))
                  for (rpm, engine), g in group.groupby(["rpm", "engine"])]
-        jobs.append((lines, "input-link rotation (deg)", QUANTITIES[q],
-                     f"{mech.upper()} MECHANISM - CASE {case}: {q}", target / f"case{case}_{mech}_{q}.png"))
+        jobs.append((lines, KED["input_deg"].label, QUANTITIES[q].label,
+                     f"Case {case}, {mech} four-bar: {QUANTITIES[q].words}", target / f"case{case}_{mech}_{q}.png"))
     return draw_all(curve_figure, jobs)
 
 

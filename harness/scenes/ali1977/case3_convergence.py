@@ -19,6 +19,7 @@ from ....port.ali1977.case3 import LISTING as CASE3_LISTING
 from ....port.ali1977.case3 import case3_linkage, case3_on_linkage
 from ...csv_output import write_csv
 from ...scene import ReportScene
+from .quantities import CASE3
 
 
 def _timed(func, repeat: int):
@@ -102,17 +103,18 @@ def plot_case3(data: pd.DataFrame, path) -> None:
     left, right = fig.subplots(1, 2)
     for (step, model), g in data.groupby(["step_deg", "model"]):
         style = "-o" if model == "coupled" else "--x"
-        left.loglog(g["n"], g["error_in"], style, ms=3, label=f"{model}, {step:g} deg")
-        right.loglog(g["seconds"], g["error_in"], style, ms=3, label=f"{model}, {step:g} deg")
-    for ax, xlabel in ((left, "sub-elements n"), (right, "port time (s)")):
+        label = f"{model} model, {step:g} deg steps"
+        left.loglog(g["n"], g["error_in"], style, ms=3, label=label)
+        right.loglog(g["seconds"], g["error_in"], style, ms=3, label=label)
+    for ax, x in ((left, "n"), (right, "seconds")):
         ax.axhline(0.0005, color="gray", lw=0.8, ls=":")
         ax.set_ylim(bottom=1e-4)
-        ax.set_xlabel(xlabel)
-        ax.set_ylabel("max tip error (in)")
+        ax.set_xlabel(CASE3[x].label)
+        ax.set_ylabel(CASE3["error_in"].label)
         ax.grid(alpha=0.3, which="both")
     left.legend(fontsize=7)
-    left.set_title("Case III: error against n (dotted: printed half unit)", fontsize=9)
-    right.set_title("Case III: error against time", fontsize=9)
+    left.set_title("Case III: tip error against sub-elements (dotted: half the printed unit)", fontsize=9)
+    right.set_title("Case III: tip error against the port's wall time", fontsize=9)
     save_png(fig, path, left=0.078, right=0.985, bottom=0.16, top=0.91, wspace=0.187)
 
 

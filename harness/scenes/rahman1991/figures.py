@@ -26,6 +26,7 @@ import pandas as pd
 from matplotlib.figure import Figure
 
 from ...report import draw_all, save_png
+from .quantities import CONFIGURATION, POSITIONS
 
 IDEAL = {"a4": 0.0, "s1": 0.0, "alpha4_deg": 270.0}
 FAMILIES = {"a4": ("a4", [10.0, 20.0, 30.0], {"s1": 3.5, "alpha4_deg": 270.0}),
@@ -34,12 +35,8 @@ FAMILIES = {"a4": ("a4", [10.0, 20.0, 30.0], {"s1": 3.5, "alpha4_deg": 270.0}),
 QUANTITIES = ["s4"] + [f"{p}{n}{c}" for p, n in [("F", 1), ("T", 1), ("F", 2), ("F", 3), ("F", 4), ("T", 4)]
                        for c in "ijk"]
 LABEL = {"a4": "a4", "s1": "S1", "alpha4_deg": "alpha4"}
-UNIT = {"a4": "in", "s1": "in", "alpha4_deg": "deg"}
+UNIT = {column: q.unit for column, q in CONFIGURATION.items()}
 COLORS = ["tab:blue", "tab:orange", "tab:green", "tab:red"]
-
-
-def unit(quantity: str) -> str:
-    return {"s": "in", "F": "lbf", "T": "lbf*in"}[quantity[0]]
 
 
 def case_rows(frame: pd.DataFrame) -> dict[tuple, pd.DataFrame]:
@@ -105,8 +102,9 @@ def draw_panel(ax, family: str, curves: list, missing: list) -> None:
         ax.plot([], [], ls="none", label=label)
     if limits is not None:
         ax.set_ylim(*limits)
-    fixed_text = ", ".join(f"{LABEL[k]}={v:g}" for k, v in FAMILIES[family][2].items())
-    ax.set_title(f"family {family} ({fixed_text})", fontsize=9)
+    col, _, fixed = FAMILIES[family]
+    fixed_text = ", ".join(f"{LABEL[k]} = {v:g} {UNIT[k]}" for k, v in fixed.items())
+    ax.set_title(f"{LABEL[col]} varies ({fixed_text})", fontsize=9)
     note = f"{off} point(s) off-scale,\nshown as edge triangles" if off else "all finite points on scale"
     ax.text(0.02, 0.97, note if limits is not None else "no finite values", transform=ax.transAxes,
             fontsize=7, va="top", color="firebrick" if off else "gray")
@@ -123,11 +121,11 @@ def draw_figure(quantity: str, panels: dict[str, list], path: Path) -> Path:
     for row, (engine, data) in zip(axes, panels.items()):
         for ax, family, (curves, missing) in zip(row, FAMILIES, data):
             draw_panel(ax, family, curves, missing)
-        row[0].set_ylabel(f"{engine}\n{quantity} ({unit(quantity)})")
+        row[0].set_ylabel(f"{engine}\n{POSITIONS[quantity].label}", fontsize=8)
     for ax in axes[-1]:
-        ax.set_xlabel("crank angle (deg)")
-    fig.suptitle(f"Rahman (1991) figs. 5-38: {quantity} against crank angle, thick black = ideal planar case",
-                 fontsize=10)
+        ax.set_xlabel(POSITIONS["crank_deg"].label)
+    fig.suptitle(f"Rahman (1991) figs. 5-38: {POSITIONS[quantity].words} against crank angle; thick black: the "
+                 "ideal planar case", fontsize=10)
     return save_png(fig, path, left=0.09, right=0.977, bottom=0.091, top=0.901, wspace=0.273, hspace=0.251)
 
 

@@ -30,7 +30,7 @@ import shutil
 import subprocess
 import tempfile
 import time
-from concurrent.futures import ThreadPoolExecutor
+from concurrent.futures import ThreadPoolExecutor, as_completed
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable
@@ -38,6 +38,7 @@ from typing import Callable
 import numpy as np
 import pandas as pd
 
+from ... import progress
 from ...csv_output import write_csv
 from ...published_tables import PublishedTable
 from ...readings import COMPILE_TIMEOUT_S, COMPILER, PRINTED_DIR, CompilerError
@@ -495,11 +496,12 @@ class Measurement:
 
 
 def measure(variants: tuple[Variant, ...] | list[Variant] = VARIANTS, workers: int | None = None,
-            shared: tuple[str, ...] = ()) -> Measurement:
+            shared: tuple[str, ...] = (), on_done: Callable[[str], None] = lambda name: None) -> Measurement:
     """Build and run every variant (side by side on the cores); the first must run
     (``ReferenceFailed`` if not), the others are reported when they fail.  ``shared``: files
     (e.g. "driver.f") compiled once from the first variant and linked into every variant
-    with the same text of them and the same flags (variants that differ in one file)."""
+    with the same text of them and the same flags (variants that differ in one file).
+    ``on_done(name)``: called in this thread as each variant is built and run (or fails)."""
     require_compiler()
     variants = list(variants)
     start = time.perf_counter()
@@ -516,7 +518,10 @@ def measure(variants: tuple[Variant, ...] | list[Variant] = VARIANTS, workers: i
             except VariantFailed as exc:
                 return variant.name, str(exc)
         with ThreadPoolExecutor(workers) as pool:
-            done = dict(pool.map(one, variants))
+            futures = [pool.submit(one, variant) for variant in variants]
+            for future in as_completed(futures):
+                on_done(future.result()[0])
+            done = dict(future.result() for future in futures)
     failures = {name: r for name, r in done.items() if isinstance(r, str)}
     if variants[0].name in failures:
         raise ReferenceFailed(f"the {variants[0].name} build failed: {failures[variants[0].name]}")
@@ -739,8 +744,12 @@ def as_markdown(m: Measurement, counts: pd.DataFrame, cells: pd.DataFrame) -> st
 
 
 def write(out_dir: Path, variants=VARIANTS) -> tuple[Measurement, pd.DataFrame, pd.DataFrame, str]:
-    """Measure and write DIR/arithmetic.csv, DIR/arithmetic_cells.csv, DIR/arithmetic.md."""
-    m = measure(variants)
+    """Measure and write DIR/arithmetic.csv, DIR/arithmetic_cells.csv, DIR/arithmetic.md; a
+    progress line over the builds on standard error when it is a terminal."""
+    variants = list(variants)
+    with progress.Bar(len(variants)):
+        progress.note("arithmetic", "gfortran builds and runs")
+        m = measure(variants, on_done=progress.done)
     cells = cell_frame(m)
     counts = count_frame(m, cells)
     text = as_markdown(m, counts, cells)

@@ -18,6 +18,7 @@ from ...published_tables import PUBLISHED_DIR, PublishedTable
 from ...report import STYLE, curve_figure, draw_all
 from ....port.rahman1996.quirks import CSSP_CORRECTED, CSSP_PRINTED
 from ...scene import ReportScene
+from .quantities import FIGURES as QUANTITIES, TABLE_QUANTITY
 from .tables import CRANK_DEG, GROUP, START, legacy_tables, port_tables, printed_run
 
 NAME = "rahman1996-figures"
@@ -63,8 +64,9 @@ def plot_figures(pct: pd.DataFrame, outdir: Path) -> list[Path]:
     for k, table in enumerate(TABLES, start=1):
         curves = [(group["crank_deg"].to_numpy(), group["pct"].to_numpy(), engine, STYLE.get(engine, {}))
                   for engine, group in pct[pct["table"] == table].groupby("engine", sort=False)]
-        jobs.append((curves, "crank angle (deg)", "decrement (%)",
-                     f"Figure 5.{k} (Table 5.{k + 1}): (before - after)/before", outdir / f"figure5_{k}.png"))
+        title = f"Figure 5.{k}: {TABLE_QUANTITY[table].words} (Table 5.{k + 1}), decrement by balancing"
+        jobs.append((curves, QUANTITIES["crank_deg"].label, QUANTITIES["pct"].label, title,
+                     outdir / f"figure5_{k}.png"))
     return draw_all(curve_figure, jobs)
 
 
