@@ -17,9 +17,10 @@ import jinja2
 import pandas as pd
 
 from . import listing_lines, register as register_mod
-from .diff import STATUSES
+from .diff import STATUSES, summary
 from .engines import ENGINES
 from .register import KINDS, Deviation
+from .report import registered_by_kind
 from .scene import Outcome
 from .scenes import SCENES, TABLES
 from .trail import printed_digits, published_source, read_diff
@@ -87,19 +88,15 @@ def table_view(scene, diff: pd.DataFrame, blocks: dict, cells: dict) -> dict:
 
 
 def overview(diff: pd.DataFrame, register: dict[str, Deviation]) -> list[dict]:
-    """Per engine: cells matched, registered by the kind of entry (a cell explained by entries of
-    several kinds counts under each), unexplained, not produced."""
-    rows = []
-    for engine in [e for e in ENGINES if e in set(diff["engine"])]:
-        mine = diff[diff["engine"] == engine]
-        kinds = {kind: 0 for kind in KINDS}
-        for ids in mine.loc[mine["status"] == "registered", "register_ids"].fillna(""):
-            for kind in {register[i].kind for i in str(ids).split() if i in register}:
-                kinds[kind] += 1
-        counts = mine["status"].value_counts()
-        rows.append({"engine": engine, "cells": len(mine), **{s: int(counts.get(s, 0)) for s in STATUSES},
-                     "kinds": kinds})
-    return rows
+    """Per engine: cells by status (``diff.summary``) and registered cells by the kind of entry
+    (``report.registered_by_kind``: a cell explained by entries of several kinds counts under each)."""
+    counts = summary(diff)
+    kinds = registered_by_kind(diff.fillna({"register_ids": ""}), register).reindex(
+        index=counts.index, columns=list(KINDS), fill_value=0)
+    return [{"engine": engine, "cells": int(counts.loc[engine].sum()),
+             **{s: int(counts.at[engine, s]) for s in STATUSES},
+             "kinds": {k: int(kinds.at[engine, k]) for k in KINDS}}
+            for engine in ENGINES if engine in counts.index]
 
 
 def figures(folder: Path) -> list[dict]:

@@ -101,7 +101,7 @@ def find(statement: Statement) -> list[ListingLine]:
 
 
 def _continues(card: str) -> bool:
-    return len(card) > 5 and not card[:1].upper() in "C*" and card[:5].strip() == "" and card[5] not in " 0"
+    return len(card) > 5 and card[:1].upper() not in "C*" and card[:5].strip() == "" and card[5] not in " 0"
 
 
 @lru_cache(maxsize=None)

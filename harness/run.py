@@ -156,8 +156,8 @@ def reproduce(names: list[str] | None, out_dir: Path, measure_readings: bool = T
     Before any work: ``OutputFolderError`` if DIR cannot be written, ``readings.CompilerError``
     if the OCR readings need gfortran and it is missing (``measure_readings=False`` skips
     them).  DIR/report.html is the same report as one page (``harness/html_report.py``), with
-    ``linkrepro bench``'s figures where DIR/bench holds them.  After the run, if an engine could not run: ``RunFailedError`` (everything else
-    is written, the failures are in the reports)."""
+    ``linkrepro bench``'s figures where DIR/bench holds them.  After the run, if an engine could
+    not run: ``RunFailedError`` (everything else is written, the failures are in the reports)."""
     names = list(dict.fromkeys(names or SCENES))
     out_dir = Path(out_dir)
     check_output_folder(out_dir, names)

@@ -51,12 +51,6 @@ class Trail:
     entries: tuple[Deviation, ...]               # every entry any engine's status names
     statements: tuple[ListingLine, ...]          # where the listings compute or write the cell
 
-    def cited(self, entry: Deviation) -> list[ListingLine]:
-        return listing_lines.cited(entry)
-
-    def edits(self, entry: Deviation) -> list[ListingLine]:
-        return listing_lines.tagged(entry.id)
-
 
 def printed_digits(text: str) -> int:
     """Significant digits of a number as printed ("-0.238" 3, "1.946666E-04" 7)."""
@@ -146,8 +140,8 @@ def as_text(trail: Trail, edits_shown: int = 6, width: int = 100) -> str:
                 for field in ("where", "printed", "meant", "evidence", "effect")]
         if entry.quirk:
             out.append(f"  port quirk: {entry.quirk}")
-        out += [f"  printed line {line.where()}\n      {line.text.strip()}" for line in trail.cited(entry)]
-        edits = trail.edits(entry)
+        out += [f"  printed line {line.where()}\n      {line.text.strip()}" for line in listing_lines.cited(entry)]
+        edits = listing_lines.tagged(entry.id)
         out += [f"  edit in {line.where()}\n      {line.text.strip()}" for line in edits[:edits_shown]]
         if len(edits) > edits_shown:
             out.append(f"  ... and {len(edits) - edits_shown} more lines of legacy/src tagged {entry.id}")

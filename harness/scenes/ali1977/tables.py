@@ -134,12 +134,12 @@ TABLE_STATEMENTS = {
                                      ("ali1977_case1_cognate", {"dx": _written("CXX", "200"), "dy": _written("CYY", "200")})),
     "ali1977_table2": ked_statements("ali1977_case2_source",
                                      ("ali1977_case2_source", {"dx": _written("XX", "200"), "dy": _written("YY", "200")}),
-                                     ("ali1977_case2_cognate", {"dx": _written("CXX", "200", False, True),
-                                                                "dy": _written("CYY", "200", False, True)})),
+                                     ("ali1977_case2_cognate", {"dx": _written("CXX", "200", printed_set=False, src_set=True),
+                                                                "dy": _written("CYY", "200", printed_set=False, src_set=True)})),
     "ali1977_table3": ked_statements("ali1977_case3_source",
                                      ("ali1977_case3_source", {"dx": CASE3_SOURCE_LINES, "dy": CASE3_SOURCE_LINES}),
-                                     ("ali1977_case3_cognate", {"dx": ((), _written("CXX", "200", True, True)[1]),
-                                                                "dy": ((), _written("CYY", "200", True, True)[1])})),
+                                     ("ali1977_case3_cognate", {"dx": ((), _written("CXX", "200", src_set=True)[1]),
+                                                                "dy": ((), _written("CYY", "200", src_set=True)[1])})),
 }
 
 #: the process the Ali (1977) tables and curves share
