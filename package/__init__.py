@@ -6,7 +6,9 @@ linkrepro.legacy   the appendix FORTRAN, compiled with f2py (plain functions, nu
 linkrepro.port     the clean Python port (PRINTED quirks reproduce legacy, CORRECTED fix them)
 linkrepro.harness  scenes, engines, cell-by-cell diff against the published tables, report
 """
-from .errors import AssemblyError, ConvergenceError, LinkageError, QPError, SingularPositionError
+from .errors import (AssemblyError, ConvergenceError, LinkageError, LinkreproWarning, ListingBugWarning,
+                     PrecisionWarning, QPError, SingularPositionError)
 
 __version__ = "0.1.0"
-__all__ = ["AssemblyError", "ConvergenceError", "LinkageError", "QPError", "SingularPositionError"]
+__all__ = ["AssemblyError", "ConvergenceError", "LinkageError", "LinkreproWarning", "ListingBugWarning",
+           "PrecisionWarning", "QPError", "SingularPositionError"]

@@ -32,3 +32,34 @@ class ConvergenceError(LinkageError):
 class QPError(ArithmeticError):
     """A quadratic program has no solution: inconsistent constraints, the iteration limit,
     or a Hessian that is not finite.  Raised alike by the legacy QPROG and the port's QP."""
+
+
+class LinkreproWarning(UserWarning):
+    """Base class of linkrepro's warnings: a result is returned, but part of it cannot be
+    trusted as far as its digits suggest."""
+
+
+class ListingBugWarning(LinkreproWarning):
+    """The inputs fall where a known bug of the original listing changes the result: the
+    engine keeps the listing's behaviour (it is what the author ran) and says so.
+    ``entry`` is the deviation register's id (``harness/deviations.toml``)."""
+
+    def __init__(self, message: str, entry: str):
+        self.entry = entry
+        super().__init__(f"{message} (the listing's bug {entry}, see the deviation register; "
+                         "quirks=CORRECTED computes what the thesis meant)")
+
+
+class PrecisionWarning(LinkreproWarning):
+    """The expected rounding error of a result passes what its digits claim: the position is
+    close to a singular one (a toggle, a dead centre) and the analysis is ill-conditioned
+    there.  ``angle_deg`` is the first input angle concerned; ``condition`` the estimate."""
+
+    def __init__(self, message: str, angle_deg: float | None = None, condition: float | None = None,
+                 relative_error: float | None = None):
+        self.angle_deg, self.condition, self.relative_error = angle_deg, condition, relative_error
+        where = f" at input angle {angle_deg:g} deg" if angle_deg is not None else ""
+        detail = [f"condition {condition:.3g}" if condition is not None else "",
+                  f"expected relative error {relative_error:.2g}" if relative_error is not None else ""]
+        detail = ", ".join(d for d in detail if d)
+        super().__init__(f"{message}{where}" + (f" ({detail})" if detail else ""))
