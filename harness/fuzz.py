@@ -402,6 +402,7 @@ class Job:
     scrub: str | None = None
     refused: tuple = ()         # names of arguments whose value must be refused
     hostile: tuple = ()         # name=value of every hostile argument
+    timeout: float | None = None  # seconds before it counts as a hang (None: the run's)
 
 
 def make_job(entry: Entry, rng: random.Random) -> Job:
@@ -623,7 +624,7 @@ class Worker:
 
     def submit(self, job: Job, timeout: float) -> None:
         self.conn.send((job.text, job.angles, job.scrub, job.refused))
-        self.job, self.deadline = job, time.monotonic() + timeout
+        self.job, self.deadline = job, time.monotonic() + (timeout if job.timeout is None else job.timeout)
 
     def log_tail(self, chars: int = 600) -> str:
         try:
@@ -674,7 +675,7 @@ def run(jobs: list, timeout: float = 20.0, workers: int = 2, progress=None) -> l
             for k, w in enumerate(pool):
                 if w.job is None or (w.conn not in ready and time.monotonic() < w.deadline):
                     continue
-                result, replace = _collect(w, w.conn in ready, timeout)
+                result, replace = _collect(w, w.conn in ready, timeout if w.job.timeout is None else w.job.timeout)
                 results[w.job.index] = result
                 done += 1
                 w.job = None

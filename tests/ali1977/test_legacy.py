@@ -9,6 +9,7 @@ from linkrepro import AssemblyError, LinkageError
 from linkrepro.legacy import ali1977
 from linkrepro.harness.engines import run_printed
 from linkrepro.harness.published_tables import PublishedTable
+from tests.patience import CHILD_SECONDS
 
 # The printed FORMAT is F12.6: half a unit of the 6th decimal, plus REAL*4 noise.
 FORMAT_TOL = 0.5e-6 + 1e-7
@@ -96,7 +97,7 @@ def test_linkage_errors_never_kill_the_interpreter():
             "for kw in (dict(l5=100.0), dict(l1=1.0, l3=1.0, l4=1.0, l5=2.0)):\n"
             "    try:\n        ali1977.case1_source(**kw)\n    except LinkageError as e:\n        print(type(e).__name__)\n"
             "print('ALIVE')\n")
-    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=CHILD_SECONDS)
     assert done.returncode == 0, done.stderr
     assert done.stdout.strip().endswith("ALIVE"), done.stdout
 

@@ -22,6 +22,7 @@ from pathlib import Path
 import pytest
 
 from linkrepro.harness.cli import main
+from tests.patience import CHILD_SECONDS
 
 SCRIPT = Path(sys.executable).with_name("linkrepro")
 COMMANDS = {"module": [sys.executable, "-m", "linkrepro"], "script": [str(SCRIPT)]}
@@ -42,7 +43,7 @@ def _env(**changes: str | None) -> dict[str, str]:
 
 
 def run(*args: str, via: str = "in-process", cwd: Path, env: dict | None = None,
-        timeout: float = 300) -> subprocess.CompletedProcess:
+        timeout: float = CHILD_SECONDS) -> subprocess.CompletedProcess:
     """The command with these arguments: ``main`` here (``via="in-process"``), or a child process."""
     if via != "in-process":
         return subprocess.run([*COMMANDS[via], *args], capture_output=True, text=True, cwd=cwd,
@@ -241,12 +242,12 @@ def test_ctrl_c(via, tmp_path):
                              env=_env(), stdin=subprocess.DEVNULL,
                              preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     try:
-        deadline = time.monotonic() + 120
+        deadline = time.monotonic() + CHILD_SECONDS
         while not out.is_dir() and child.poll() is None and time.monotonic() < deadline:
             time.sleep(0.05)
         assert child.poll() is None, "the run ended before it could be interrupted"
         child.send_signal(signal.SIGINT)
-        stdout, stderr = child.communicate(timeout=60)
+        stdout, stderr = child.communicate(timeout=CHILD_SECONDS)
     finally:
         if child.poll() is None:
             child.kill()
