@@ -112,6 +112,6 @@ def qprog(h, g, a=None, b=None, neq: int = 0) -> dict:
         raise QPError("QPROG: iteration limit reached")
     if status == 3:
         raise ValueError("QPROG: bad arguments")
-    if not (np.all(np.isfinite(sol)) and np.all(np.isfinite(lam[:nact]))):
-        raise QPError("QPROG: the solution is not finite (the arithmetic overflowed)")
+    if not (np.isfinite(diag) and np.all(np.isfinite(sol)) and np.all(np.isfinite(lam[:nact]))):
+        raise QPError("QPROG: the solution or DIAG (the shift of H) is not finite (the arithmetic overflowed)")
     return {"sol": sol, "diag": float(diag), "active": iact[:nact] - 1, "multipliers": lam[:nact]}

@@ -39,9 +39,9 @@ TABLES = ("5_2", "5_3", "5_4", "5_5", "5_6", "5_7")
 def hessian_shift(h: np.ndarray) -> float:
     """DIAG: the multiple of I that makes H positive definite, by our QPROG's rule (D050).
 
-    Cholesky pivot by pivot; a pivot below sqrt(eps)*max|H_ii| raises DIAG by the
-    shortfall and restarts.  0 for a positive definite H.  The rule is port/qprog.py's,
-    operation for operation the FORTRAN's.
+    Cholesky pivot by pivot on H scaled to a largest entry in [1, 4); a pivot below
+    sqrt(eps)*max|H_ij| raises DIAG by the shortfall and restarts.  0 for a positive
+    definite H.  The rule is port/qprog.py's, operation for operation the FORTRAN's.
     """
     return qprog.hessian_shift(h)
 

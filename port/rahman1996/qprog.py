@@ -3,7 +3,7 @@
 Minimises g'x + x'Hx/2 subject to a[:neq] x = b[:neq] and a[neq:] x >= b[neq:] by the
 Goldfarb-Idnani dual active-set method as DQPROG writes it.  If H is not positive definite,
 H + DIAG*I is used, DIAG found by raising Cholesky pivots (``hessian_shift``, the DIAG rule:
-a pivot below sqrt(eps)*max|H_ii| raises DIAG by the shortfall and the factorization
+a pivot below sqrt(eps)*max|H_ij| raises DIAG by the shortfall and the factorization
 restarts).  Only the diagonal and the lower triangle of H are read, as in the FORTRAN.
 
 Every operation is DQPROG's (with QPCHSL and QPGAUS) in DQPROG's order: sums run in the
@@ -17,8 +17,17 @@ FORTRAN and here alike (register D050): where raising DIAG by the shortfall woul
 it in floating point (a negative H_jj, e.g. H = diag(-1.3, 5.3)), DIAG takes the next number
 up (the FORTRAN repeated GO TO 100 forever); and the active set can take numerically
 dependent normals before QPGAUS finds M singular, more than there are variables, so GN, M
-and RHS are sized by the constraints (the FORTRAN's, sized by the variables, overflowed).  Non-finite a, b, h or g are ValueError and a non-finite solution (overflow) is
+and RHS are sized by the constraints (the FORTRAN's, sized by the variables, overflowed).
+Non-finite a, b, h or g are ValueError and a non-finite solution or DIAG (overflow) is
 QPError, in both faces (``linkrepro.checks``).
+
+Its tolerances were absolute (issue 22: a row scaled by 1e13, or H by 1e16, gave a wrong
+answer or "inconsistent"), so DQPROG now solves the problem in its own units (``_dqprog``):
+each row of a and b scaled by a power of two to a largest entry in [1, 2), H and g by a
+power of four to a largest |H_ij| in [1, 4), the Goldfarb-Idnani method (QPSOLV,
+``_solve``) run on that, DIAG and the multipliers scaled back.  A problem and its copies
+with rows, H and g scaled by any factors get the same answer up to rounding, and by powers
+of two (four for H) the same bits.
 
 Units are the caller's; in the CSSP balancing problem x holds the nine point masses
 (lb*s^2/in) and H is twice the objective's quadratic form summed over the cycle.
@@ -48,16 +57,25 @@ def _max(a, b):
 
 
 @njit(cache=True)
+def _hmax(h):
+    """QPHMAX: the largest |H_ij| of the lower triangle (the part QPROG reads)."""
+    big = 0.0
+    for j in range(h.shape[0]):                           # DO 20
+        for i in range(j, h.shape[0]):                    # DO 10
+            big = _max(big, abs(h[i, j]))
+    return big
+
+
+@njit(cache=True)
 def _cholesky_shift(h, low):
-    """Statements 5-130: L L' = H + DIAG*I, raising DIAG where a pivot falls below TINY.
+    """Statements 5-130: L L' = H + DIAG*I, raising DIAG where a pivot falls below TINY =
+    sqrt(eps) * max |H_ij| (lower triangle).
 
     Fills ``low`` (L, lower triangle) and returns DIAG.  A shortfall below DIAG's last bit
     takes the next number up (DNEW = NEAREST(DIAG, 1.0D0)).
     """
     n = h.shape[0]
-    scale = 0.0
-    for i in range(n):                                    # DO 5
-        scale = _max(scale, abs(h[i, i]))
+    scale = _hmax(h)
     if scale == 0.0:
         scale = 1.0
     tiny = math.sqrt(EPS) * scale
@@ -140,6 +158,46 @@ def _gaus(n, m, rhs, x):
 @njit(cache=True)
 def _dqprog(h, g, a, b, neq):
     """DQPROG on validated arguments: (status, DIAG, SOL, NACT, IACT, ALAMDA).
+
+    QPSOLV (``_solve``) on the problem in its own units: row i of a and b times 2**e_i, so
+    that its largest |a_ij| is in [1, 2); H and g times 4**(-k), so that the largest |H_ij|
+    of the lower triangle (of g where H = 0) is in [1, 4).  Powers of two, so the scaled
+    numbers hold the same digits; DIAG and the multipliers are scaled back.
+    """
+    nvar, ncon = g.shape[0], b.shape[0]
+    a_s, b_s, rows = np.empty((ncon, nvar)), np.empty(ncon), np.zeros(ncon, dtype=np.int64)
+    for i in range(ncon):                                 # DO 20
+        big = 0.0
+        for j in range(nvar):                             # DO 10
+            big = _max(big, abs(a[i, j]))
+        if big > 0.0:
+            rows[i] = 1 - math.frexp(big)[1]              # 1 - EXPONENT(BIG)
+        for j in range(nvar):                             # DO 15
+            a_s[i, j] = math.ldexp(a[i, j], rows[i])      # SCALE(A(I,J), IRS(I))
+        b_s[i] = math.ldexp(b[i], rows[i])
+    big = _hmax(h)
+    if big == 0.0:
+        for j in range(nvar):                             # DO 35
+            big = _max(big, abs(g[j]))
+    kh = 0
+    if big > 0.0:
+        kh = math.floor(0.5 * (math.frexp(big)[1] - 1))
+    g_s, h_s = np.empty(nvar), np.zeros((nvar, nvar))
+    for j in range(nvar):                                 # DO 45
+        g_s[j] = math.ldexp(g[j], -2 * kh)
+        for i in range(j, nvar):                          # DO 40
+            h_s[i, j] = math.ldexp(h[i, j], -2 * kh)
+    status, diag, sol, nact, iact, alamda = _solve(h_s, g_s, a_s, b_s, neq)
+    diag = math.ldexp(diag, 2 * kh)
+    for k in range(nact):                                 # DO 50
+        alamda[k] = math.ldexp(alamda[k], 2 * kh + rows[iact[k]])
+    return status, diag, sol, nact, iact, alamda
+
+
+@njit(cache=True)
+def _solve(h, g, a, b, neq):
+    """QPSOLV, the Goldfarb-Idnani method on the scaled problem: (status, DIAG, SOL, NACT,
+    IACT, ALAMDA).
 
     Indices are 0-based (constraint i is the FORTRAN's I = i+1; P = 0 is p = -1).
     ``gn[k]`` holds the column GN(.,K).  Work arrays are sized by NCON (see the module
@@ -291,13 +349,15 @@ def _dqprog(h, g, a, b, neq):
     return SOLVED, diag, sol, nact, iact, alamda
 
 
-def hessian_shift(h) -> float:
-    """DIAG: the multiple of I that QPROG adds to H (0 for a positive definite H).
+def hessian_shift(h, g=None) -> float:
+    """DIAG: the multiple of I that QPROG adds to H for min g'x + x'Hx/2 (0 for a positive
+    definite H; g, default 0, sets the scale only where H = 0).
 
-    The DIAG rule of statements 5-130, operation for operation.
+    The DIAG rule of statements 5-130 on the scaled H, as ``qprog`` finds it (it is its
+    answer's ``diag`` without constraints).
     """
-    h = np.ascontiguousarray(finite_matrix("h", h))
-    return float(_cholesky_shift(h, np.zeros_like(h)))
+    h = finite_matrix("h", h)
+    return qprog(h, np.zeros(len(h)) if g is None else g)["diag"]
 
 
 def qprog(h, g, a=None, b=None, neq: int = 0) -> dict:
@@ -316,7 +376,7 @@ def qprog(h, g, a=None, b=None, neq: int = 0) -> dict:
         raise QPError("QPROG: the constraints are inconsistent")
     if status == ITERATION_LIMIT:
         raise QPError("QPROG: iteration limit reached")
-    if not (np.all(np.isfinite(sol)) and np.all(np.isfinite(lam[:nact]))):
-        raise QPError("QPROG: the solution is not finite (the arithmetic overflowed)")
+    if not (np.isfinite(diag) and np.all(np.isfinite(sol)) and np.all(np.isfinite(lam[:nact]))):
+        raise QPError("QPROG: the solution or DIAG (the shift of H) is not finite (the arithmetic overflowed)")
     return {"sol": sol, "diag": float(diag), "active": iact[:nact].copy(),
             "multipliers": lam[:nact].copy()}

@@ -74,7 +74,7 @@ def assert_same(h, g, a=None, b=None, neq=0) -> str:
     assert ours["active"].dtype == theirs["active"].dtype
     assert np.array_equal(ours["active"], theirs["active"]), (ours["active"], theirs["active"])
     assert np.array_equal(bits(ours["multipliers"]), bits(theirs["multipliers"]))
-    assert port_cssp.hessian_shift(h) == ours["diag"]           # one DIAG rule, used by the CSSP
+    assert port_qprog.hessian_shift(h, g) == ours["diag"]       # one DIAG rule, used by the CSSP
     return "solved, diag > 0" if ours["diag"] > 0 else "solved"
 
 
