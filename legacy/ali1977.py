@@ -19,6 +19,9 @@ or assign from REAL*4 literals (section values, density) representable there: fi
 positive where it must be), ``AssemblyError`` when the four-bar (or its cognate) cannot
 close at some input angle, ``SingularPositionError`` when a position gives a non-finite
 result (both with the input angle; the port raises the same, see ``linkrepro.port``).
+The cognate programs warn (``linkrepro.ListingBugWarning``, register D141) where the
+listing's BETA turns the cognate into the wrong place: ``alp`` below 0 or above 180 deg, or
+a coupler triangle obtuse at the follower pin (l2 cos(alp) > l3).
 
 Threads: every call into the compiled FORTRAN (static storage) holds ``FORTRAN_LOCK``;
 calls from several threads are serialized and each returns what it would alone.
@@ -32,6 +35,7 @@ import numpy as np
 
 from ..checks import INTEGER_MAX, as_real4, integer, parameter, real4_array, speed_rpm, weight_lbf
 from ..errors import AssemblyError, SingularPositionError
+from ..port.ali1977.fourbar import warn_listing_beta
 from . import _ali1977 as _f
 
 #: held around every call into the compiled Ali (1977) FORTRAN (static storage)
@@ -117,6 +121,7 @@ def case1_cognate(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_P
     ``dx, dy`` (cognate deflections, in) and ``rot`` (rad).  Default speed 300 rpm.
     """
     n = _check_inputs((l1, l2, l3, l4, l5), alp, rpm, mass_lbf, area, modulus, inertia, step_deg)
+    warn_listing_beta("case1_cognate", l2, l3, alp)
     with FORTRAN_LOCK:
         deg, xp, yp, cxp, cyp, dx, dy, rot, istat = _f.ked1c(
             l1, l2, l3, l4, l5, alp, rpm, mass_lbf, area, modulus, inertia, step_deg, n)
@@ -152,6 +157,7 @@ def case2_cognate(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_P
     ``dx, dy`` (in) and ``rot`` (rad).
     """
     n = _check_inputs((l1, l2, l3, l4, l5), alp, rpm, density, area, modulus, inertia, step_deg)
+    warn_listing_beta("case2_cognate", l2, l3, alp)
     with FORTRAN_LOCK:
         deg, xp, yp, cxp, cyp, dx, dy, rot, istat = _f.ked2c(l1, l2, l3, l4, l5, alp, rpm, density, area,
                                                              modulus, inertia, step_deg, n)
@@ -189,6 +195,7 @@ def case3_cognate(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_P
     cognate listing with the Case III source listing's changes (the tip node's weight
     density*area*CL2, double-precision loads, E*I bending).  Returns as case1_cognate."""
     n = _check_inputs((l1, l2, l3, l4, l5), alp, rpm, density, area, modulus, inertia, step_deg)
+    warn_listing_beta("case3_cognate", l2, l3, alp)
     with FORTRAN_LOCK:
         deg, xp, yp, cxp, cyp, dx, dy, rot, istat = _f.ked3c(l1, l2, l3, l4, l5, alp, rpm, density, area,
                                                              modulus, inertia, step_deg, n)

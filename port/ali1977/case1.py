@@ -42,7 +42,8 @@ from numba import njit
 
 from ...checks import angles_deg, as_real4, parameter, speed_rpm, weight_lbf
 from .. import libm
-from .fourbar import Cognate, Lengths, cannot_close, check_finite, freudenstein_constants, half_angle_roots, raise_first_assembly_failure, raise_if_cannot_close
+from .fourbar import (Cognate, Lengths, cannot_close, check_finite, freudenstein_constants, half_angle_roots,
+                      raise_first_assembly_failure, raise_if_cannot_close, warn_listing_beta)
 from .quirks import CORRECTED, PRINTED, Quirks
 from ..real4 import product, store
 
@@ -608,7 +609,9 @@ def _cognate_linkage(deg: np.ndarray, lengths: Lengths, alp: float | None, rpm: 
     alp, rpm = parameter("alp", alp, largest=None), speed_rpm(rpm)
     speed = float(np.float32(rpm)) if quirks.real4_storage else float(rpm)       # S is REAL*4 in the listing
     l1, l2, l3, l4, l5 = lengths.l1, lengths.l2, lengths.l3, lengths.l4, lengths.l5
-    cog = Cognate.of(lengths, alp, pi)
+    if quirks.cognate_beta_quadrant:
+        warn_listing_beta("the port with cognate_beta_quadrant on", lengths.l2, lengths.l3, alp, stacklevel=4)
+    cog = Cognate.of(lengths, alp, pi, signed_beta=not quirks.cognate_beta_quadrant)
     om2 = (2.0 * pi * speed) / 60.0
     motion = _cognate_motion(deg, pi, freudenstein_constants(l1, l3, l4, l5), cog.constants(), l1, l2, alp,
                              cog.cl1, cog.cl3, cog.cl4, cog.calp, om2)

@@ -13,13 +13,14 @@ from __future__ import annotations
 
 import functools
 import math
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
 from numba import njit
 
 from ...checks import parameter
-from ...errors import AssemblyError, SingularPositionError
+from ...errors import AssemblyError, ListingBugWarning, SingularPositionError
 from .. import libm
 
 
@@ -110,12 +111,33 @@ def check_finite(deg, who, **arrays):
             raise SingularPositionError(f"{who}: non-finite {name}", float(deg[i]))
 
 
+def listing_beta_is_wrong(l2: float, l3: float, alp: float) -> bool:
+    """True where the cognate listings' BETA = ATAN(SQRT(1 - CBTA**2)/CBTA) (register D141) is
+    not the cognate frame's turn: the coupler point on the other side of the coupler
+    (sin(alp) < 0) or the coupler triangle obtuse at the follower pin B (l2 cos(alp) > l3).
+    Lengths in inches, ``alp`` in radians."""
+    return math.sin(alp) < 0.0 or l2 * math.cos(alp) > l3
+
+
+def warn_listing_beta(who: str, l2: float, l3: float, alp: float, stacklevel: int = 3) -> None:
+    """A ListingBugWarning (D141) where ``listing_beta_is_wrong``: the listing's cognate is then
+    turned into the wrong place and its coupler point leaves the source's coupler curve."""
+    if listing_beta_is_wrong(l2, l3, alp):
+        warnings.warn(ListingBugWarning(
+            f"{who}: with alp = {math.degrees(alp):g} deg (l2 = {l2:g}, l3 = {l3:g} in) the listing's "
+            "BETA drops the sign or quadrant of the coupler triangle's angle at B, so the cognate is "
+            "turned into the wrong place", "D141"), stacklevel=stacklevel)
+
+
 @dataclass(frozen=True)
 class Cognate:
     """The crossed coupler cognate derived from the source (cognate listing, 32-47).
 
     ``beta`` (rad) is the angle by which the cognate's frame is turned against the
-    source's; ``calp`` the cognate's rigid coupler angle (gamma, about 101 deg).
+    source's: the coupler triangle's signed angle at the follower pin B, atan2(l2 sin alp,
+    l3 - l2 cos alp); the listing's ATAN(SBTA/CBTA) with SBTA = SQRT(1 - CBTA**2) >= 0
+    keeps it only in [0, 90) deg (D141, ``signed_beta=False``).  ``calp`` is the cognate's
+    rigid coupler angle (gamma, about 101 deg in the example).
     """
     cl1: float
     cl2: float
@@ -127,7 +149,7 @@ class Cognate:
 
     @classmethod
     @functools.lru_cache(maxsize=256)      # a pure function of its (immutable) arguments, asked for on every call
-    def of(cls, lengths: Lengths, alp: float, pi: float) -> "Cognate":
+    def of(cls, lengths: Lengths, alp: float, pi: float, signed_beta: bool = False) -> "Cognate":
         l1, l2, l3, l4, l5 = (np.float64(v) for v in (lengths.l1, lengths.l2, lengths.l3, lengths.l4, lengths.l5))
         # IEEE arithmetic as in the listing: a degenerate cognate (CL4 = 0 when L2 = L3 and
         # ALP = 0, or 1 - CBTA**2 < 0 by rounding) gives inf or NaN here, not an exception;
@@ -139,9 +161,12 @@ class Cognate:
             cl2 = k * l4
             cl5 = np.sqrt(((k * l5) * (k * l5)) + (l5 * l5) - (2.0 * l5 * l5 * k * libm.cos(alp)))
             cl1 = l1 * cl4 / l3
-            cbta = ((l3 * l3) + (cl4 * cl4) - (l2 * l2)) / (2.0 * l3 * cl4)
-            sbta = np.sqrt(1.0 - cbta * cbta)
-            beta = libm.arctan(sbta / cbta)
+            if signed_beta:
+                beta = math.atan2(l2 * math.sin(alp), l3 - l2 * math.cos(alp))
+            else:
+                cbta = ((l3 * l3) + (cl4 * cl4) - (l2 * l2)) / (2.0 * l3 * cl4)
+                sbta = np.sqrt(1.0 - cbta * cbta)
+                beta = libm.arctan(sbta / cbta)
             calp = pi - (beta + alp)
         return cls(float(cl1), float(cl2), float(cl3), float(cl4), float(cl5), float(beta), float(calp))
 
