@@ -7,7 +7,10 @@ of Tables 5.1-5.7.  Defaults are the printed PARAMETERs (section 5.2).
 Units as printed: inch, lbf, second; masses lb*s^2/in; inertias lb*s^2*in; angles deg.
 Errors: ``ValueError`` for bad parameters, ``ConvergenceError`` when the printed
 Newton-Raphson gives up after 150 iterations (the listing's STOP), ``SingularPositionError``
-when INVERSE meets an exactly zero pivot (its STOP), ``QPError`` when QPROG fails.
+when INVERSE meets an exactly zero pivot (its STOP) or, before any other failure, at the
+first position the program computed whose velocity equations have a condition number beyond
+``linkrepro.checks.POSITION_CONDITION_LIMIT`` (the listing computes on there; register D150),
+``QPError`` when QPROG fails.
 
 Threads: the FORTRAN keeps static storage (-fno-automatic, COMMON /INVERR/, /QPSTAT/), and
 a status is read by a second call after the routine returns.  Every call sequence here holds
@@ -20,7 +23,7 @@ import threading
 
 import numpy as np
 
-from ..checks import LARGEST, finite_matrix, parameter, qp_arguments
+from ..checks import LARGEST, finite_matrix, listing_condition, parameter, qp_arguments, refuse_singular_position
 from ..errors import ConvergenceError, QPError, SingularPositionError
 from . import _rahman1996 as _f
 
@@ -58,9 +61,13 @@ def cssp(a1=2.0, a2=8.0, a4=1.0, alpha4_deg=250.0, s1=0.4, rpm=3000.0, solution=
         if sol_in.shape != (9,) or not np.all(np.isfinite(sol_in)) or np.any(np.abs(sol_in) > LARGEST):
             raise ValueError("solution must hold 9 finite masses")
         sol_in = sol_in.astype(np.float32)
+    qout = np.full((5, 37, 2), np.nan, order="F")      # NaN where the program computes no position
     with FORTRAN_LOCK:
         table, sol, inert, hout, diag, istat, fail_deg, qout = _f.cssp(
-            a1, a2, a4, alpha4_deg, s1, rpm, int(solution is not None), sol_in)
+            a1, a2, a4, alpha4_deg, s1, rpm, int(solution is not None), sol_in, qout)
+    positions = qout.transpose(2, 1, 0)
+    refuse_singular_position(np.tile(10.0 * np.arange(37), 2),
+                             listing_condition(positions[..., 0], positions[..., 1], positions[..., 2]))
     if istat == 1:
         raise ConvergenceError("CSSP: Newton-Raphson failed after 150 iterations", float(fail_deg))
     if istat == 2:
@@ -73,7 +80,7 @@ def cssp(a1=2.0, a2=8.0, a4=1.0, alpha4_deg=250.0, s1=0.4, rpm=3000.0, solution=
                                     float(10 * np.argmax(bad)))
     return {"table": table, "solution": sol.astype(np.float64), "inertia": inert,
             "hessian": hout.astype(np.float64), "diag": float(diag),
-            "positions": qout.transpose(2, 1, 0).copy()}
+            "positions": positions.copy()}
 
 
 def inverse(s) -> np.ndarray:

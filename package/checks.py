@@ -1,11 +1,14 @@
 """Argument checks shared by the legacy faces and the port: one message, one error type per
-mistake (TypeError for what is not a number, ValueError for a number out of its domain)."""
+mistake (TypeError for what is not a number, ValueError for a number out of its domain); and
+the rule by which the CSSP engines refuse a singular position (SingularPositionError)."""
 from __future__ import annotations
 
 import math
 import numbers
 
 import numpy as np
+
+from .errors import SingularPositionError
 
 #: the largest magnitude a parameter may have (inch, rpm, deg, lbf*in): a bound on the
 #: arithmetic, not on physics; beyond it the programs' powers of speeds and lengths overflow
@@ -155,3 +158,43 @@ def qp_arguments(h, g, a, b, neq, max_variables: int, max_constraints: int):
         if not np.all(np.isfinite(value)):
             raise ValueError(f"{name} must be finite")
     return h, g, a, b, int(neq)
+
+
+# Rahman (1996): where the slider crank's position degenerates, one rule for legacy and the port.
+
+#: the largest condition number of the slider crank's velocity equations the CSSP engines
+#: accept: 1/sqrt(u) for the unit roundoff u = 2**-24 of the listing's REAL*4 inputs.  Beyond
+#: it one rounding of an input moves the tables by tens of per cent (register D150)
+POSITION_CONDITION_LIMIT = 2.0 ** 12
+
+
+def listing_condition(theta2, eta2, theta3) -> np.ndarray:
+    """kappa at each of the listing's positions: the 2-norm condition number of its velocity
+    equations VM DOT = VV (VM'VM is what its INVERSE inverts for the rates; DOT = theta2', theta3',
+    eta2', eta3', s4'), in units of the rod length (A2 = 1: s4' per rod length, the length
+    rows per rod length), so that it is dimensionless.  Angles in radians, arrays of one shape;
+    NaN where a position is not finite (not computed)."""
+    done = np.isfinite(theta2) & np.isfinite(eta2) & np.isfinite(theta3)
+    t2, e2, t3 = (np.asarray(v, dtype=float)[done] for v in (theta2, eta2, theta3))
+    z, o = np.zeros_like(t2), np.ones_like(t2)
+    rows = [[-np.sin(e2), z, np.sin(t2) * np.cos(e2), z, z],
+            [z, z, z, z, np.sin(t3)],
+            [z, z, np.cos(t2), o, z],
+            [np.cos(e2), z, np.sin(t2) * np.sin(e2), z, -np.cos(t3)],
+            [np.cos(e2), o, np.sin(t2) * np.sin(e2), z, z],
+            [z, z, -np.cos(t2), z, z]]
+    kappa = np.full(done.shape, np.nan)
+    kappa[done] = np.linalg.cond(np.stack([np.stack(row, axis=-1) for row in rows], axis=-2))
+    return kappa
+
+
+def refuse_singular_position(crank_deg, kappa) -> None:
+    """SingularPositionError at the first position (in the order given) whose condition number
+    ``kappa`` passes POSITION_CONDITION_LIMIT; NaN (a position not computed) is skipped."""
+    crank_deg, kappa = np.ravel(crank_deg), np.ravel(kappa)
+    beyond = kappa > POSITION_CONDITION_LIMIT
+    if np.any(beyond):
+        i = int(np.argmax(beyond))
+        raise SingularPositionError("CSSP: singular position (the loop's velocity equations have a condition "
+                                    f"number beyond {POSITION_CONDITION_LIMIT:g})", float(crank_deg[i]),
+                                    condition=float(kappa[i]))

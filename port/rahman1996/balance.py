@@ -92,7 +92,7 @@ def _passes(inputs: CsspInputs, quirks: CsspQuirks, c: Constants):
             yield Pass(loads, position_forms(loads, c, quirks, positions))
         return
     from .mechanics import closed_loop_loads
-    loads = closed_loop_loads(c, np.radians(CRANK_DEG))
+    loads = closed_loop_loads(c, CRANK_DEG)
     yield Pass(loads, position_forms(loads, c, quirks, positions))
 
 

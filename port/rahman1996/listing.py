@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ...checks import finite_matrix
+from ...checks import angles_deg, finite_matrix, listing_condition, refuse_singular_position
 from ...errors import ConvergenceError, SingularPositionError
 from ..slider_crank import newton as kernel
 from .data import Constants
@@ -134,13 +134,15 @@ def listing_pass(crank_deg: np.ndarray, q0: np.ndarray, c: Constants, printed: b
 
     Raises where the listing STOPs, at the same crank angle: ConvergenceError after 150
     Newton evaluations, SingularPositionError when INVERSE meets a zero pivot (in the
-    Newton's A'A or the rates' VM'VM).  ``printed``: invert with the listing's INVERSE,
-    else by LU with pivoting.
+    Newton's A'A or the rates' VM'VM); before either, SingularPositionError at the first
+    position computed whose loop is ill-conditioned (``linkrepro.checks``, register D150).
+    ``printed``: invert with the listing's INVERSE, else by LU with pivoting.
     """
-    deg = np.asarray(crank_deg, dtype=float)
+    deg = angles_deg("crank_deg", crank_deg)
     theta1 = deg * (c.pi / 180.0)
     q, dot, ddot, _, status, j = kernel.listing_sweep(theta1, np.asarray(q0, dtype=float), c.a1, c.a2, c.a4,
                                                       c.alpha4, c.s1, c.omega, c.newton_tol, printed)
+    refuse_singular_position(deg, listing_condition(q[:, 0], q[:, 1], q[:, 2]))   # NaN where not computed
     if status == kernel.NOT_CONVERGED:
         why = ("the first estimate sqrt(a2^2-(a1+a4)^2) is not real" if not np.all(np.isfinite(q0))
                else f"no convergence after {kernel.MAX_ITERATIONS} iterations")

@@ -25,6 +25,7 @@ from types import SimpleNamespace
 
 import numpy as np
 
+from ...checks import angles_deg, refuse_singular_position
 from ..dual import skew
 from ..slider_crank.kinematics import Geometry, _refuse, kinematics
 
@@ -168,22 +169,25 @@ def kinetic_energy(geom: Geometry, model: MassModel, theta1_rad, x) -> np.ndarra
     return 0.5 * np.einsum("nkh,k->n", (v * v).sum(axis=-1), np.asarray(x, dtype=float)) / 2.0
 
 
-def closed_loop_loads(c, theta1_rad):
-    """This model's loads in the form the objective takes (``rahman1996.objective.UnitLoads``).
+def closed_loop_loads(c, crank_deg):
+    """This model's loads in the form the objective takes (``rahman1996.objective.UnitLoads``)
+    at the crank angles ``crank_deg`` (deg).
 
-    ``c``: a ``rahman1996.data.Constants`` (lengths, speed, masses as one precision holds them).
-    Bearing moments: M1 without its z-component (T0), M2 of the Hooke joint, M3 = 0 of the
-    ball joint, M4 of the slider's guide.
+    ``c``: a ``rahman1996.data.Constants`` (lengths, speed, masses as one precision holds them;
+    its loop's numbers are the geometry).  Bearing moments: M1 without its z-component (T0),
+    M2 of the Hooke joint, M3 = 0 of the ball joint, M4 of the slider's guide.  Raises
+    SingularPositionError at the first angle where the loop is ill-conditioned
+    (``linkrepro.checks.refuse_singular_position``, register D150).
     """
     from .data import GRAVITY
     from .objective import UnitLoads as ObjectiveLoads
+    deg = angles_deg("crank_deg", crank_deg)
     masses = np.asarray(c.masses)
     radii = tuple(tuple(np.sqrt(np.asarray(i) / m)) for i, m in ((c.inertia_crank, masses[0]),
                                                                   (c.inertia_rod, masses[1])))
-    geom = Geometry(a1=c.a1, a2=c.a2, a4=c.a4, alpha4_deg=float(np.degrees(c.alpha4)), s1=c.s1,
-                    rpm=c.omega * 30.0 / np.pi)
     model = MassModel(weights=tuple(masses * GRAVITY), cg=c.cg, radii=radii, g=GRAVITY)
-    loads = unit_loads(geom, model, theta1_rad)
+    loads = unit_loads(c, model, np.radians(deg))
+    refuse_singular_position(deg, loads.kin.condition)
     m1 = loads.M1.copy()
     m1[..., 2] = 0.0
     return ObjectiveLoads(shaking_force=loads.force, shaking_moment=loads.moment,

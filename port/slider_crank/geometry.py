@@ -52,7 +52,12 @@ class CsspInputs:
     @property
     def k4(self) -> np.ndarray:
         """Unit vector of the slider's travel (its joint moves along -k4 as s4 grows)."""
-        return np.array([0.0, math.sin(self.alpha4), math.cos(self.alpha4)])
+        return slider_axis(self.alpha4)
+
+
+def slider_axis(alpha4: float) -> np.ndarray:
+    """k4 = (0, sin alpha4, cos alpha4), the slider's axis for the ground twist alpha4 (rad)."""
+    return np.array([0.0, math.sin(alpha4), math.cos(alpha4)])
 
 
 def single(x, real4: bool) -> float:
@@ -71,6 +76,11 @@ class LoopConstants:
     omega: float               # crank speed, rad/s
     pi: float
     newton_tol: float          # the listing's 0.0000001
+
+    @property
+    def k4(self) -> np.ndarray:
+        """Unit vector of the slider's travel (as ``CsspInputs.k4``)."""
+        return slider_axis(self.alpha4)
 
     @classmethod
     def of(cls, inputs: CsspInputs, real4: bool) -> "LoopConstants":

@@ -80,11 +80,17 @@ Geometry = CsspInputs
 def kinematics(geom: Geometry, theta1_rad, s1_jet=None) -> SimpleNamespace:
     """Positions (in), velocities (in/s), accelerations (in/s^2) over crank angles (rad).
 
+    ``geom``: the loop's inputs (``CsspInputs``) or its numbers as one precision holds them
+    (``LoopConstants``): a1, a2, a4, s1 (in), alpha4 (rad), omega (rad/s), k4.
+
     ``s1_jet``: the crank's axial offset S1 and its first two time derivatives (3, n), for a
     crank that slides as it turns (Rahman 1991, eq. 28); by default the constant geom.s1.
 
     Attributes X, Xd, Xdd for X in P, Q, s4, u, M1R, R2, theta2, eta2; w2, alpha2 (rad/s,
-    rad/s^2, rod angular velocity and acceleration); n2; ``jets`` holds them as (3, n, ...).
+    rad/s^2, rod angular velocity and acceleration); n2; ``jets`` holds them as (3, n, ...);
+    ``condition``: the 2-norm condition number of the loop's velocity equations (the closure's
+    Jacobian in s4 and the rod's angles per unit rod length, [k4, k1 x u, du/deta2]), which
+    grows as 2/|u.k4| towards a toggle and as 1/cos(eta2) towards a locked Hooke joint.
     """
     th = np.atleast_1d(np.asarray(theta1_rad, dtype=float))
     deg, n = np.degrees(th), th.size
@@ -117,7 +123,10 @@ def kinematics(geom: Geometry, theta1_rad, s1_jet=None) -> SimpleNamespace:
     ce, se = _cos(eta2), _sin(eta2)
     R2 = _bil(np.matmul, A, _matrix([[ce, zero, se], [zero, one, zero], [-se, zero, ce]]))
     e, k = A[..., :, 1], np.array([0.0, 0.0, 1.0])
-    kin = SimpleNamespace(theta1=th, omega=geom.omega, n2=-A[0, :, :, 0],
+    # the velocity equations' matrix: d(Q - P - a2 u)/d(s4, a2 theta2, a2 eta2) = -[k4, k x u, -R2 k]
+    closure_jacobian = np.stack([np.broadcast_to(geom.k4, (n, 3)), np.cross(k, u[0]),
+                                 -R2[0, :, :, 2]], axis=-1)
+    kin = SimpleNamespace(theta1=th, omega=geom.omega, n2=-A[0, :, :, 0], condition=np.linalg.cond(closure_jacobian),
                           w2=(geom.omega + theta2[1])[:, None] * k + eta2[1][:, None] * e[0],
                           alpha2=theta2[2][:, None] * k + eta2[2][:, None] * e[0]
                           + eta2[1][:, None] * e[1],

@@ -63,8 +63,8 @@ def cssp_cycle(count: int) -> tuple[int, float, np.ndarray]:
     """The corrected CSSP model over ``count`` equal intervals of the turn: (count, its cycle
     integral G-bar of eq. (4.1) for the original masses, the QP's masses in lb*s^2/in)."""
     c = Constants.of(CsspInputs(), False)
-    theta = np.arange(count) * (2 * np.pi / count)
-    forms = position_forms(closed_loop_loads(c, theta), c, CSSP_CORRECTED, count).sum(axis=0)
+    forms = position_forms(closed_loop_loads(c, np.arange(count) * (360.0 / count)), c, CSSP_CORRECTED,
+                           count).sum(axis=0)
     return count, float(c.point_masses @ forms @ c.point_masses), solve_qp(2 * forms, bounds=c.qp_bounds)[0]
 
 
