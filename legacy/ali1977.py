@@ -35,7 +35,8 @@ import numpy as np
 
 from ..checks import INTEGER_MAX, as_real4, integer, parameter, real4_array, speed_rpm, weight_lbf
 from ..errors import AssemblyError, SingularPositionError
-from ..port.ali1977.fourbar import warn_listing_beta
+from ..port.ali1977.conditioning import check_precision, condition, spread
+from ..port.ali1977.fourbar import Cognate, Lengths, warn_listing_beta
 from . import _ali1977 as _f
 
 #: held around every call into the compiled Ali (1977) FORTRAN (static storage)
@@ -90,6 +91,23 @@ def _raise_on_status(istat: int, deg: np.ndarray, arrays: dict, program: str) ->
             raise SingularPositionError(f"{program}: non-finite {name}", float(deg[i]))
 
 
+def _finish(out: dict, lengths: tuple, alp: float, cognate: bool, program: str) -> dict:
+    """The port's precision rule on a listing's results (``port.ali1977.conditioning``): a
+    SingularPositionError at a toggle to working precision, a PrecisionWarning where fewer than
+    half the REAL*4 digits are left; ``condition`` added, per input angle."""
+    l1, l2, l3, l4, l5 = lengths
+    loops, links = [(l1, l3, l4, l5)], list(lengths)
+    if cognate:
+        cog = Cognate.of(Lengths(*lengths), alp, PI_PRINTED)
+        loops.append((cog.cl1, cog.cl3, cog.cl4, cog.cl5))
+        links += [cog.cl1, cog.cl2, cog.cl3, cog.cl4, cog.cl5]
+    link_spread = spread(links)
+    kappa = condition(out["deg"], PI_PRINTED, loops, link_spread)
+    check_precision(out["deg"], kappa, link_spread, True, program)
+    out["condition"] = kappa
+    return out
+
+
 def case1_source(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_SOURCE_PRINTED,
                  rpm=400.0, mass_lbf=2.0, area=CA_PRINTED, modulus=ME_PRINTED,
                  inertia=MI_PRINTED, step_deg=20.0) -> dict[str, np.ndarray]:
@@ -106,7 +124,7 @@ def case1_source(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_SOURCE_PRI
                                                    area, modulus, inertia, step_deg, n)
     out = {"deg": deg, "xp": xp, "yp": yp, "dx": dx, "dy": dy, "rot": rot}
     _raise_on_status(istat, deg, {k: v for k, v in out.items() if k != "deg"}, "KED1S")
-    return out
+    return _finish(out, (l1, l2, l3, l4, l5), alp, False, "KED1S")
 
 
 def case1_cognate(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_PRINTED,
@@ -127,7 +145,7 @@ def case1_cognate(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_P
             l1, l2, l3, l4, l5, alp, rpm, mass_lbf, area, modulus, inertia, step_deg, n)
     out = {"deg": deg, "xp": xp, "yp": yp, "cxp": cxp, "cyp": cyp, "dx": dx, "dy": dy, "rot": rot}
     _raise_on_status(istat, deg, {k: v for k, v in out.items() if k != "deg"}, "KED1C")
-    return out
+    return _finish(out, (l1, l2, l3, l4, l5), alp, True, "KED1C")
 
 
 def case2_source(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_PRINTED,
@@ -144,7 +162,7 @@ def case2_source(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_PR
                                                    modulus, inertia, step_deg, n)
     out = {"deg": deg, "xp": xp, "yp": yp, "dx": dx, "dy": dy, "rot": rot}
     _raise_on_status(istat, deg, {k: v for k, v in out.items() if k != "deg"}, "KED2S")
-    return out
+    return _finish(out, (l1, l2, l3, l4, l5), alp, False, "KED2S")
 
 
 def case2_cognate(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_PRINTED,
@@ -163,7 +181,7 @@ def case2_cognate(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_P
                                                              modulus, inertia, step_deg, n)
     out = {"deg": deg, "xp": xp, "yp": yp, "cxp": cxp, "cyp": cyp, "dx": dx, "dy": dy, "rot": rot}
     _raise_on_status(istat, deg, {k: v for k, v in out.items() if k != "deg"}, "KED2C")
-    return out
+    return _finish(out, (l1, l2, l3, l4, l5), alp, True, "KED2C")
 
 
 def case3_source(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_PRINTED,
@@ -185,7 +203,7 @@ def case3_source(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_PR
     out = {"deg": deg, "xp": xp, "yp": yp, "dx": nodes[:, 0, 0], "dy": nodes[:, 0, 1],
            "rot": nodes[:, 0, 2], "nodes": nodes}
     _raise_on_status(istat, deg, {"xp": xp, "yp": yp, "nodes": nodes}, "KED3S")
-    return out
+    return _finish(out, (l1, l2, l3, l4, l5), alp, False, "KED3S")
 
 
 def case3_cognate(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_PRINTED,
@@ -201,7 +219,7 @@ def case3_cognate(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_P
                                                              modulus, inertia, step_deg, n)
     out = {"deg": deg, "xp": xp, "yp": yp, "cxp": cxp, "cyp": cyp, "dx": dx, "dy": dy, "rot": rot}
     _raise_on_status(istat, deg, {k: v for k, v in out.items() if k != "deg"}, "KED3C")
-    return out
+    return _finish(out, (l1, l2, l3, l4, l5), alp, True, "KED3C")
 
 
 def gmtra(a: np.ndarray) -> np.ndarray:

@@ -42,6 +42,7 @@ from numba import njit
 
 from ...checks import angles_deg, as_real4, parameter, speed_rpm, weight_lbf
 from .. import libm
+from .conditioning import check_precision, condition, spread
 from .fourbar import (Cognate, Lengths, cannot_close, check_finite, freudenstein_constants, half_angle_roots,
                       raise_first_assembly_failure, raise_if_cannot_close, warn_listing_beta)
 from .quirks import CORRECTED, PRINTED, Quirks
@@ -425,6 +426,21 @@ class Linkage:
         _, acc = self._point(length)
         return acc if np.ndim(length) else acc[0]
 
+    def loops(self) -> tuple[list, list]:
+        """The four-bars this linkage solves (each l1, l3, l4, l5, in) and all its links."""
+        raise NotImplementedError
+
+    def finish(self, out: dict, who: str, stacklevel: int = 4) -> dict:
+        """A program's results ``out`` checked for their precision (``conditioning``: raise at
+        a toggle to working precision, warn where half the digits are gone), with the per-angle
+        ``condition`` added."""
+        loops, links = self.loops()
+        link_spread = spread(links)
+        kappa = condition(self.deg, _pi(self.quirks), loops, link_spread)
+        check_precision(self.deg, kappa, link_spread, self.quirks.real4_storage, who, stacklevel=stacklevel)
+        out["condition"] = kappa
+        return out
+
     def pin_accelerations(self):
         """Accelerations (in/s^2, the mechanism's frame) of the crank pin A, (XAA, YAA), and of the
         follower pin B, (XBA, YBA), as Case II's listing forms them (the source's with D032, a
@@ -439,6 +455,11 @@ class SourceLinkage(Linkage):
     ``ext_angle`` = alp + t3, ``ctx`` = cot(t4 - t3)."""
     alp: float
     ctx: np.ndarray
+
+    def loops(self) -> tuple[list, list]:
+        lengths = self.lengths
+        loop = (lengths.l1, lengths.l3, lengths.l4, lengths.l5)
+        return [loop], [lengths.l2, *loop]
 
     def _point(self, l2):
         return _path_points(_extender_lengths(l2), self.lengths.l1, self.om2, self.om3, self.alph3,
@@ -489,7 +510,7 @@ def _source_linkage(deg: np.ndarray, lengths: Lengths, alp: float | None, rpm: f
     motion = _source_motion(deg, pi, *freudenstein_constants(l1, l3, l4, l5), l1, l3, l4, alp, om2,
                             quirks.omega3_sign, 1.0 if quirks.joint_b_acceleration_sign else -1.0)
     t2, t3, t4, ext_angle, om3, alph3, c2, s2, c3, s3, c4, s4, ce, se, ctx = motion[:15]
-    raise_if_cannot_close(deg, "source", *motion[19:])
+    raise_if_cannot_close(deg, "source", *motion[19:], toggle=None if quirks.toggle_as_open else (pi, l1, l3, l4, l5))
     return SourceLinkage(deg=deg, lengths=lengths, quirks=quirks, t2=t2, t3=t3, t4=t4, ext_angle=ext_angle, om2=om2,
                          om3=om3, alph3=alph3, c2=c2, s2=s2, c3=c3, s3=s3, c4=c4, s4=s4, ce=ce, se=se,
                          pins=motion[15:19], alp=alp, ctx=ctx)
@@ -541,7 +562,7 @@ def source_case1(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = No
     dx, dy, rot = _case1_deflection(mech, mass_lbf, section, quirks)
     out = {"xp": mech.xp, "yp": mech.yp, "dx": dx, "dy": dy, "rot": rot}
     check_finite(deg, "source", **out)
-    return out
+    return mech.extra["linkage"].finish(out, "case I source")
 
 
 @dataclass
@@ -562,6 +583,11 @@ class CognateLinkage(Linkage):
     turn_sin: float
     xp: np.ndarray
     yp: np.ndarray
+
+    def loops(self) -> tuple[list, list]:
+        lengths, cog = self.lengths, self.cognate
+        loops = [(lengths.l1, lengths.l3, lengths.l4, lengths.l5), (cog.cl1, cog.cl3, cog.cl4, cog.cl5)]
+        return loops, [lengths.l2, cog.cl2, *loops[0], *loops[1]]
 
     def _point(self, cl2):
         return _path_points(_extender_lengths(cl2), self.cognate.cl1, self.om2, self.om3, self.alph3,
@@ -619,7 +645,9 @@ def _cognate_linkage(deg: np.ndarray, lengths: Lengths, alp: float | None, rpm: 
      c2, s2, c3, s3, c4, s4, cg, sg, ce, se, cctx) = motion[:22]
     cdisc3, cdisc4 = motion[26:]
     # The listing tests the source loop, then the cognate's, at each angle before the next.
-    raise_first_assembly_failure(deg, source=cannot_close(disc3, disc4), cognate=cannot_close(cdisc3, cdisc4))
+    toggles = None if quirks.toggle_as_open else {"source": (pi, l1, l3, l4, l5),                   # D142
+                                                  "cognate": (pi, cog.cl1, cog.cl3, cog.cl4, cog.cl5)}
+    raise_first_assembly_failure(deg, toggles, source=cannot_close(disc3, disc4), cognate=cannot_close(cdisc3, cdisc4))
     with np.errstate(invalid="ignore"):
         turn_cos, turn_sin = libm.cos(-cog.beta), libm.sin(-cog.beta)
     return CognateLinkage(deg=deg, lengths=lengths, quirks=quirks, t2=t2, t3=t3, t4=t4, ext_angle=ext_angle, om2=om2,
@@ -661,4 +689,4 @@ def cognate_case1(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = N
     out = {"xp": mech.extra["xp"], "yp": mech.extra["yp"], "cxp": mech.extra["cxp"],
            "cyp": mech.extra["cyp"], "dx": dx, "dy": dy, "rot": rot}
     check_finite(deg, "cognate", **out)
-    return out
+    return mech.extra["linkage"].finish(out, "case I cognate")

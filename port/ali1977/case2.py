@@ -115,7 +115,7 @@ def case2_source(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = No
     out = {"xp": mech.xp, "yp": mech.yp, "dx": delta[:, 0].astype(np.float64),
            "dy": delta[:, 1].astype(np.float64), "rot": delta[:, 2].astype(np.float64)}
     check_finite(deg, "case II source", **out)
-    return out
+    return mech.extra["linkage"].finish(out, "case II source")
 
 
 def case2_cognate(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = None,
@@ -149,7 +149,7 @@ def case2_cognate(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = N
     out = {"xp": e["xp"], "yp": e["yp"], "cxp": e["cxp"], "cyp": e["cyp"], "dx": dx, "dy": dy,
            "rot": delta[:, 2].astype(np.float64)}
     check_finite(deg, "case II cognate", **out)
-    return out
+    return mech.extra["linkage"].finish(out, "case II cognate")
 
 
 __all__ = ["LISTING", "COGNATE_LISTING", "DENSITY", "COGNATE_COUPLER", "beta2", "joint_loads", "case2_source", "case2_cognate"]

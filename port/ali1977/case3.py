@@ -240,7 +240,7 @@ def _case3_on(linkage, sec: Section, positions, weights, all_nodes: bool) -> dic
             out["nodes"] = nodes
     else:
         check_finite(deg, "case III source", **out)
-    return out
+    return linkage.finish(out, "case III source", stacklevel=5)
 
 
 def case3_source(deg, n: int = 5, lengths: Lengths = EXAMPLE.lengths, alp: float | None = None,
@@ -322,7 +322,7 @@ def case3_cognate(deg, n: int = 5, lengths: Lengths = EXAMPLE.lengths, alp: floa
     out = {"xp": mech.extra["xp"], "yp": mech.extra["yp"], "cxp": mech.extra["cxp"], "cyp": mech.extra["cyp"],
            "dx": dx, "dy": dy, "rot": delta[:, 2].astype(np.float64)}
     check_finite(deg, "case III cognate", **out)
-    return out
+    return mech.extra["linkage"].finish(out, "case III cognate")
 
 
 __all__ = ["LISTING", "COGNATE_LISTING", "DENSITY", "node_positions", "node_weights", "case3_source",

@@ -22,6 +22,7 @@ from numba import njit
 from ...checks import parameter
 from ...errors import AssemblyError, ListingBugWarning, SingularPositionError
 from .. import libm
+from .conditioning import closes_within_rounding
 
 
 @dataclass(frozen=True)
@@ -75,25 +76,35 @@ def cannot_close(disc3, disc4) -> np.ndarray:
     return (disc3 < 0.0) | (disc4 < 0.0)
 
 
-def raise_first_assembly_failure(deg, **loops) -> None:
+def raise_first_assembly_failure(deg, toggles: dict | None = None, **loops) -> None:
     """AssemblyError at the first input angle where any of the named loops (``who=mask``)
-    cannot close: the listings test every loop at one angle before going on to the next."""
+    cannot close: the listings test every loop at one angle before going on to the next.
+    ``toggles`` (who -> (pi, l1, l3, l4, l5), the corrected engines): a loop that closes
+    within rounding there is at a toggle, SingularPositionError, not open."""
     first = None
     for who, bad in loops.items():
         if bad.any():
             i = int(np.argmax(bad))
             if first is None or i < first[0]:
                 first = (i, who)
-    if first is not None:
-        raise AssemblyError(f"{first[1]}: the four-bar cannot close", float(deg[first[0]]))
+    if first is None:
+        return
+    i, who = first
+    if toggles and who in toggles and closes_within_rounding(float(deg[i]), *toggles[who]):
+        raise SingularPositionError(f"{who}: at a toggle (coupler and follower in line), where the loop "
+                                    "closes but rounding makes the position equations' discriminant negative",
+                                    float(deg[i]))
+    raise AssemblyError(f"{who}: the four-bar cannot close", float(deg[i]))
 
 
-def raise_if_cannot_close(deg, who, disc3, disc4) -> None:
+def raise_if_cannot_close(deg, who, disc3, disc4, toggle: tuple | None = None) -> None:
     """AssemblyError at the first input angle where a discriminant is negative (with the
-    smaller of the two)."""
+    smaller of the two); ``toggle`` as raise_first_assembly_failure's."""
     bad = cannot_close(disc3, disc4)
     if bad.any():
         i = int(np.argmax(bad))
+        if toggle is not None:
+            raise_first_assembly_failure(deg, {who: toggle}, **{who: bad})
         raise AssemblyError(f"{who}: the four-bar cannot close", float(deg[i]),
                             discriminant=float(min(disc3[i], disc4[i])))
 

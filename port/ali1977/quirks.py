@@ -25,6 +25,7 @@ class Quirks(QuirkSwitches):
     cognate_frame: bool = True           # D025  cognate deflections left in the cognate's own frame
     cognate_moment_row: bool = True      # D026  cognate CG1, CH1, CI1 are not the moments about P
     cognate_beta_quadrant: bool = True   # D141  cognate BETA=ATAN(SQRT(1-CBTA**2)/CBTA): beta's sign and quadrant lost
+    toggle_as_open: bool = True          # D142  a toggle whose discriminant rounds below 0 is "cannot close"
     joint_load_components: bool = True   # D031  Case II: P5, P6, P7 not the components along the elements
     joint_b_acceleration_sign: bool = True  # D032  Case II: +L3*ALPH3*SIN(T3) in B's x-acceleration
     node_mass_from_pin: bool = True      # D033  Case III: node k carries the mass of the extender up to it

@@ -1,9 +1,10 @@
 """Ali (1977), the K.E.D. analysis of a four-bar and its crossed cognate: Tables I-III, the
-Appendix A curves, the Case III convergence study."""
+Appendix A curves, the Case III convergence study, the conditioning near a toggle."""
 from .appendix import SCENE as APPENDIX
 from .case3_convergence import SCENE as CASE3_CONVERGENCE
+from .conditioning import SCENE as CONDITIONING
 from .quantities import QUANTITIES
 from .tables import TABLES
 
-SCENES = [*TABLES, APPENDIX, CASE3_CONVERGENCE]
+SCENES = [*TABLES, APPENDIX, CASE3_CONVERGENCE, CONDITIONING]
 __all__ = ["SCENES", "TABLES", "QUANTITIES"]
