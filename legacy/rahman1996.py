@@ -23,7 +23,8 @@ import threading
 
 import numpy as np
 
-from ..checks import LARGEST, finite_matrix, listing_condition, parameter, qp_arguments, refuse_singular_position
+from ..checks import (finite_matrix, listing_condition, masses, qp_arguments, refuse_singular_position,
+                      slider_crank)
 from ..errors import ConvergenceError, QPError, SingularPositionError
 from . import _rahman1996 as _f
 
@@ -42,29 +43,24 @@ INERTIA_ROWS = [("crank", "i_xx"), ("crank", "i_yy"), ("crank", "i_zz"),
 def cssp(a1=2.0, a2=8.0, a4=1.0, alpha4_deg=250.0, s1=0.4, rpm=3000.0, solution=None) -> dict:
     """Run the CSSP program (both passes: objective, QPROG, comparison) once.
 
-    a1, a2, a4, s1 in inches, alpha4_deg in degrees, rpm the crank speed.  ``solution``
-    (9 masses, lb*s^2/in) replaces QPROG's answer for the "after" columns (D055);
-    by default QPROG's own is used.  Returns ``table`` (37 x 12, columns CSSP_COLUMNS,
-    rows crank 0..360 deg), ``solution`` (9), ``inertia`` (6 x 2: before, after; rows
-    INERTIA_ROWS), ``hessian`` (9 x 9, h = 2*OF, REAL*4 as QPROG gets it), ``diag``, and
-    ``positions`` (2 passes x 37 crank angles x theta2, eta2, theta3, eta3 in rad, s4 in in:
-    the Newton's converged joint variables, D053).
+    a1, a2, a4, s1 in inches, alpha4_deg in degrees, rpm the crank speed (the six checked
+    together: a TypeError before any ValueError, as ``CsspInputs``).  The program solves its
+    QP twice: after pass 1 (the masses its 'after' columns of Tables 5.2-5.7 are computed
+    with in pass 2) and after pass 2 (the masses of Table 5.1).  ``solution`` (9 masses,
+    lb*s^2/in), if given, replaces both answers (D055).  Returns ``table`` (37 x 12, columns
+    CSSP_COLUMNS, rows crank 0..360 deg), ``solution`` (9: the masses behind the 'after'
+    columns, the first QP's answer; fed back, it gives the same 'after' columns), ``solution_table51``
+    (9: Table 5.1's, the second QP's answer; D151), ``inertia`` (6 x 2: before, after; rows
+    INERTIA_ROWS), ``hessian`` (9 x 9, h = 2*OF of the first QP, REAL*4 as QPROG gets it),
+    ``diag``, and ``positions`` (2 passes x 37 crank angles x theta2, eta2, theta3, eta3 in
+    rad, s4 in in: the Newton's converged joint variables, D053).
     """
-    a1, a2, rpm = (parameter(name, v, positive=True) for name, v in (("a1", a1), ("a2", a2), ("rpm", rpm)))
-    a4, alpha4_deg, s1 = (parameter(name, v) for name, v in (("a4", a4), ("alpha4_deg", alpha4_deg), ("s1", s1)))
-    sol_in = np.zeros(9, dtype=np.float32)
-    if solution is not None:
-        try:
-            sol_in = np.asarray(solution, dtype=np.float64).ravel()
-        except (TypeError, ValueError) as exc:
-            raise TypeError(f"solution must hold 9 masses ({exc})") from None
-        if sol_in.shape != (9,) or not np.all(np.isfinite(sol_in)) or np.any(np.abs(sol_in) > LARGEST):
-            raise ValueError("solution must hold 9 finite masses")
-        sol_in = sol_in.astype(np.float32)
+    p = slider_crank(a1, a2, a4, alpha4_deg, s1, rpm)
+    sol_in = np.zeros(9, dtype=np.float32) if solution is None else masses("solution", solution).astype(np.float32)
     qout = np.full((5, 37, 2), np.nan, order="F")      # NaN where the program computes no position
     with FORTRAN_LOCK:
-        table, sol, inert, hout, diag, istat, fail_deg, qout = _f.cssp(
-            a1, a2, a4, alpha4_deg, s1, rpm, int(solution is not None), sol_in, qout)
+        table, sol51, inert, hout, diag, istat, fail_deg, qout, sol = _f.cssp(
+            p["a1"], p["a2"], p["a4"], p["alpha4_deg"], p["s1"], p["rpm"], int(solution is not None), sol_in, qout)
     positions = qout.transpose(2, 1, 0)
     refuse_singular_position(np.tile(10.0 * np.arange(37), 2),
                              listing_condition(positions[..., 0], positions[..., 1], positions[..., 2]))
@@ -78,7 +74,8 @@ def cssp(a1=2.0, a2=8.0, a4=1.0, alpha4_deg=250.0, s1=0.4, rpm=3000.0, solution=
     if bad.any():
         raise SingularPositionError("CSSP: a non-finite value in the tables",
                                     float(10 * np.argmax(bad)))
-    return {"table": table, "solution": sol.astype(np.float64), "inertia": inert,
+    return {"table": table, "solution": sol.astype(np.float64), "solution_table51": sol51.astype(np.float64),
+            "inertia": inert,
             "hessian": hout.astype(np.float64), "diag": float(diag),
             "positions": positions.copy()}
 

@@ -19,8 +19,7 @@ def parameter(name: str, value, *, positive: bool = False, largest: float | None
     """One real parameter as a float: TypeError if it is not a real number (a bool is not),
     ValueError if it is not finite, not positive where it must be, or beyond ``largest``
     (None: no bound but finiteness)."""
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
-        raise TypeError(f"{name} must be a real number, got {type(value).__name__} {value!r}")
+    _real_number(name, value)
     try:
         value = float(value)
     except OverflowError:
@@ -32,6 +31,21 @@ def parameter(name: str, value, *, positive: bool = False, largest: float | None
     if largest is not None and abs(value) > largest:
         raise ValueError(f"{name} = {value!r} is out of range (at most {largest:g} in magnitude)")
     return value
+
+
+def _real_number(name: str, value) -> None:
+    """TypeError unless ``value`` is a real number (a bool is not)."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
+        raise TypeError(f"{name} must be a real number, got {type(value).__name__} {value!r}")
+
+
+def parameters(values: dict, positive: tuple = ()) -> dict:
+    """Several real parameters (``parameter``, names as keys) as floats, those named in
+    ``positive`` positive: every TypeError before any ValueError, so that the error's type
+    does not depend on the order in which the arguments are checked."""
+    for name, value in values.items():
+        _real_number(name, value)
+    return {name: parameter(name, value, positive=name in positive) for name, value in values.items()}
 
 
 def as_real4(name: str, value: float, *, positive: bool = False) -> float:
@@ -52,22 +66,39 @@ INTEGER_MAX = 2**31 - 1
 
 def integer(name: str, value, smallest: int = 1, largest: int = INTEGER_MAX) -> int:
     """A FORTRAN INTEGER argument: TypeError unless an integer (an integral float is one, a
-    bool is not), ValueError outside smallest..largest."""
+    bool is not), ValueError outside smallest..largest (a Python int of any size)."""
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
         raise TypeError(f"{name} must be an integer, got {type(value).__name__} {value!r}")
-    if not (math.isfinite(value) and float(value).is_integer()):
+    if not isinstance(value, numbers.Integral) and not (math.isfinite(value) and float(value).is_integer()):
         raise ValueError(f"{name} must be an integer, got {value!r}")
     if not smallest <= value <= largest:
         raise ValueError(f"{name} must be from {smallest} to {largest}, got {value!r}")
     return int(value)
 
 
+def real_array(name: str, value) -> np.ndarray:
+    """``value`` as a float64 array: TypeError unless it holds real numbers (not bool, str or
+    other objects), ValueError for ragged nesting or a number too large for a double (a
+    Python int beyond 1.8e308)."""
+    try:
+        raw = np.asarray(value)
+    except ValueError as exc:                             # ragged nesting
+        raise ValueError(f"{name} must be an array of numbers: {exc}") from None
+    if raw.dtype.kind == "O" and all(isinstance(v, numbers.Real) and not isinstance(v, (bool, np.bool_))
+                                     for v in raw.flat):
+        try:
+            return raw.astype(np.float64)                 # Python ints beyond int64
+        except OverflowError:
+            raise ValueError(f"{name} holds a number too large for a double") from None
+    if raw.dtype.kind not in "iuf":
+        raise TypeError(f"{name} must be an array of real numbers, got dtype {raw.dtype}")
+    return raw.astype(np.float64)
+
+
 def real4_array(name: str, value) -> np.ndarray:
     """An array of numbers as the listing's REAL*4 holds them: TypeError unless numeric,
     ValueError if a value is not finite there (NaN, infinity, beyond 3.4e38)."""
-    raw = np.asarray(value)
-    if raw.dtype.kind not in "iuf":
-        raise TypeError(f"{name} must be an array of real numbers, got dtype {raw.dtype}")
+    raw = real_array(name, value)
     with np.errstate(over="ignore"):
         held = raw.astype(np.float32)
     if not np.all(np.isfinite(held)):
@@ -103,13 +134,7 @@ def angles_deg(name: str, value, *, largest: float = LARGEST) -> np.ndarray:
     """Input angles (deg) as a float64 array: TypeError unless an array of numbers (not bool,
     str or object), ValueError unless non-empty, 1-D (a scalar is not) and finite, within
     ``largest``."""
-    try:
-        raw = np.asarray(value)
-    except ValueError as exc:                             # ragged nesting
-        raise ValueError(f"{name} must be a 1-D array of angles (deg): {exc}") from None
-    if raw.dtype.kind not in "iuf":
-        raise TypeError(f"{name} must be an array of numbers (deg), got dtype {raw.dtype}")
-    deg = raw.astype(np.float64)
+    deg = real_array(name, value)
     if deg.ndim != 1 or deg.size == 0:
         raise ValueError(f"{name} must be a non-empty 1-D array of angles (deg), got shape {deg.shape}")
     if not np.all(np.isfinite(deg)):
@@ -123,10 +148,7 @@ def angles_deg(name: str, value, *, largest: float = LARGEST) -> np.ndarray:
 def finite_matrix(name: str, value, shape: tuple[int, int] | None = None) -> np.ndarray:
     """``value`` as a finite float64 matrix of the given shape (None: any non-empty square)."""
     wanted = f"a {shape[0]} x {shape[1]} matrix" if shape else "a non-empty square matrix"
-    try:
-        matrix = np.asarray(value, dtype=np.float64)
-    except (TypeError, ValueError) as exc:
-        raise TypeError(f"{name} must be {wanted} of numbers ({exc})") from None
+    matrix = real_array(name, value)
     square = matrix.ndim == 2 and matrix.shape[0] == matrix.shape[1] and matrix.size > 0
     if (matrix.shape != shape) if shape else not square:
         raise ValueError(f"{name} must be {wanted}, got shape {matrix.shape}")
@@ -135,32 +157,43 @@ def finite_matrix(name: str, value, shape: tuple[int, int] | None = None) -> np.
     return matrix
 
 
+def masses(name: str, value, count: int = 9) -> np.ndarray:
+    """``count`` point masses (lb*s^2/in) as a float64 array: TypeError unless numbers,
+    ValueError unless that many, finite and within LARGEST."""
+    x = real_array(name, value).ravel()
+    if x.shape != (count,) or not np.all(np.isfinite(x)) or np.any(np.abs(x) > LARGEST):
+        raise ValueError(f"{name} must hold {count} finite masses (lb*s^2/in, at most {LARGEST:g} in magnitude)")
+    return x
+
+
 def qp_arguments(h, g, a, b, neq, max_variables: int, max_constraints: int):
     """QPROG's arguments (minimize g'x + x'Hx/2 s.t. a[:neq] x = b[:neq], a[neq:] x >= b[neq:])
     as finite float64 arrays: (h, g, a, b, neq); ValueError/TypeError otherwise."""
-    try:
-        g = np.asarray(g, dtype=np.float64).ravel()
-        h = np.asarray(h, dtype=np.float64)
-        a = np.zeros((0, g.size)) if a is None else np.atleast_2d(np.asarray(a, dtype=np.float64))
-        b = np.zeros(0) if b is None else np.asarray(b, dtype=np.float64).ravel()
-    except (TypeError, ValueError) as exc:
-        raise TypeError(f"QPROG needs arrays of numbers ({exc})") from None
+    g, h = real_array("g", g).ravel(), real_array("h", h)
+    a = np.zeros((0, g.size)) if a is None else np.atleast_2d(real_array("a", a))
+    b = np.zeros(0) if b is None else real_array("b", b).ravel()
     n = g.size
     if n == 0 or h.shape != (n, n):
         raise ValueError(f"h must be an n x n matrix and g an n-vector with n >= 1, got {h.shape} and {n}")
     if a.ndim != 2 or a.shape[1] != n or a.shape[0] != b.size:
         raise ValueError(f"a must be m x {n} with b of length m, got {a.shape} and {b.size}")
-    if isinstance(neq, bool) or not float(neq).is_integer() or not 0 <= neq <= b.size:
-        raise ValueError(f"neq must be an integer from 0 to {b.size}, got {neq!r}")
+    neq = integer("neq", neq, 0, b.size)
     if n > max_variables or b.size > max_constraints:
         raise ValueError(f"QPROG holds at most {max_variables} variables and {max_constraints} constraints")
     for name, value in (("h", h), ("g", g), ("a", a), ("b", b)):
         if not np.all(np.isfinite(value)):
             raise ValueError(f"{name} must be finite")
-    return h, g, a, b, int(neq)
+    return h, g, a, b, neq
 
 
-# Rahman (1996): where the slider crank's position degenerates, one rule for legacy and the port.
+# Rahman (1996) and (1991): the slider crank's rules, shared by the legacy face and the port.
+
+def slider_crank(a1, a2, a4, alpha4_deg, s1, rpm) -> dict:
+    """The slider crank's inputs (in, deg, rpm) as floats (``parameters``): a1, a2 and rpm
+    positive; every TypeError before any ValueError."""
+    return parameters(dict(a1=a1, a2=a2, a4=a4, alpha4_deg=alpha4_deg, s1=s1, rpm=rpm),
+                      positive=("a1", "a2", "rpm"))
+
 
 #: the largest condition number of the slider crank's velocity equations the CSSP engines
 #: accept: 1/sqrt(u) for the unit roundoff u = 2**-24 of the listing's REAL*4 inputs.  Beyond

@@ -11,9 +11,10 @@ C     PROGRAM CANNOT RUN WITHOUT THEM, EACH MARKED BY A [LINKREPRO]
 C     COMMENT.  SEE THE TRANSCRIPTION NOTES FOR SEED LINES AND READINGS.
 C
       SUBROUTINE CSSP(A1,A2,A4,AL4,S1,RPM,USESOL,SOLIN,TABLE,SOLOUT,    ! D051
-     1 INERT,HOUT,DIAGO,ISTAT,FAILDG,QOUT)                              ! D051
+     1 INERT,HOUT,DIAGO,ISTAT,FAILDG,QOUT,SOLAFT)                       ! D151
       INTEGER USESOL,ISTAT,IQP,IERINV                                   ! D051
       REAL SOLIN(9),SOLOUT(9),HOUT(9,9),DIAGO,FAILDG                    ! D051
+      REAL SOLAFT(9)                                                    ! D151
       REAL*8 QOUT(5,37,2)                                               ! D053
       DOUBLE PRECISION TABLE(37,12),INERT(6,2)                          ! D051
       COMMON /INVERR/ IERINV                                            ! D052
@@ -1283,6 +1284,10 @@ C     write (6,1) OF(6,8),OF(8,6),OF(9,9)
       DO 45 I4=1,9                                                      ! D055
    45 sol(I4)=SOLIN(I4)                                                 ! D055
       ENDIF                                                             ! D055
+      IF (I3.EQ.1) THEN                                                 ! D151
+      DO 47 I4=1,9                                                      ! D151
+   47 SOLAFT(I4)=sol(I4)                                                ! D151
+      ENDIF                                                             ! D151
 C     write (nout,999) (sol(k),k=1,nvar)
 C 999 format ('the solution vector is',/,'sol=(',9F12.6,')')
 C     write(6,*) m(1),m(2),m(3),m(4),m(5),m(6),m(7),m(8),m(9)

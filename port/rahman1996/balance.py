@@ -19,6 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ...checks import masses
 from ...errors import QPError, SingularPositionError
 from . import qprog
 from .data import QP_EQUALITIES, QP_ROWS, Constants, CsspInputs, qp_constraints
@@ -96,21 +97,25 @@ def _passes(inputs: CsspInputs, quirks: CsspQuirks, c: Constants):
     yield Pass(loads, position_forms(loads, c, quirks, positions))
 
 
-def balance(inputs: CsspInputs = CsspInputs(), quirks: CsspQuirks = CSSP_PRINTED) -> dict:
+def balance(inputs: CsspInputs = CsspInputs(), quirks: CsspQuirks = CSSP_PRINTED, solution=None) -> dict:
     """Run the balancing example; every quantity of Tables 5.1-5.7.
 
     Returns ``table`` (37 x 12: objective, shaking force, shaking moment, bearing force,
     bearing torque, input torque, each before and after, rows 0..360 deg), ``inertia``
-    (6 x 2: I_xx, I_yy, I_zz of crank and rod, before and after), ``solution`` (the
-    masses of the 'after' columns), ``solution_table51`` (those of Table 5.1), and
-    ``diag`` and ``hessian`` of the first QP.
+    (6 x 2: I_xx, I_yy, I_zz of crank and rod, before and after), ``solution`` (9 masses,
+    lb*s^2/in: those behind the 'after' columns, the first QP's answer; fed back, it gives
+    the same 'after' columns), ``solution_table51`` (those of Table 5.1, the last QP's
+    answer), and ``diag`` and ``hessian`` of the first QP; the same meanings as
+    ``linkrepro.legacy.rahman1996.cssp`` (register D151).
     With ``open_loop_model`` the listing's two passes run: OF accumulates over both, the
-    tables use the first QP's answer, Table 5.1 the second's (as printed).
+    tables use the first QP's answer, Table 5.1 the second's (as printed).  ``solution``
+    (9 masses), if given, replaces every QP's answer, as the legacy face's (D055).
     """
     if not isinstance(inputs, CsspInputs):
         raise TypeError(f"inputs must be CsspInputs, got {type(inputs).__name__}")
     if not isinstance(quirks, CsspQuirks):
         raise TypeError(f"quirks must be CsspQuirks (CSSP_PRINTED, CSSP_CORRECTED, ...), got {type(quirks).__name__}")
+    given = None if solution is None else masses("solution", solution)
     c = Constants.of(inputs, quirks.cssp_real4)
     single = (lambda v: np.asarray(v, np.float32).astype(float)) if quirks.cssp_real4 else np.asarray
     counted = slice(0, 37 if quirks.objective_37_positions else 36)
@@ -122,7 +127,7 @@ def balance(inputs: CsspInputs = CsspInputs(), quirks: CsspQuirks = CSSP_PRINTED
         accumulated = accumulated + sweep.forms[counted].sum(axis=0)
         hessian = single(2.0 * accumulated)
         x, diag = solve_qp(hessian, rows, bounds, equalities)
-        solutions.append(single(x))
+        solutions.append(single(x if given is None else given))
         first_qp = first_qp or (hessian, diag)
     last, after = passes[-1], solutions[0]
     before = c.point_masses

@@ -16,11 +16,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ...checks import parameter
-
-#: the fields of CsspInputs that must be positive
-POSITIVE = ("a1", "a2", "rpm")
-
+from ...checks import slider_crank
 
 @dataclass(frozen=True)
 class CsspInputs:
@@ -34,10 +30,12 @@ class CsspInputs:
     rpm: float = 3000.0
 
     def __post_init__(self):
-        """Each field a real number (TypeError), finite, within linkrepro.checks.LARGEST, and
-        a1, a2, rpm positive (ValueError): the rules of the legacy face too."""
-        for name in ("a1", "a2", "a4", "alpha4_deg", "s1", "rpm"):
-            object.__setattr__(self, name, parameter(name, getattr(self, name), positive=name in POSITIVE))
+        """Each field a real number (TypeError, before any ValueError), finite, within
+        linkrepro.checks.LARGEST, and a1, a2, rpm positive (ValueError): the rules of the
+        legacy face too (``linkrepro.checks.slider_crank``)."""
+        checked = slider_crank(self.a1, self.a2, self.a4, self.alpha4_deg, self.s1, self.rpm)
+        for name, value in checked.items():
+            object.__setattr__(self, name, value)
 
     @property
     def omega(self) -> float:
