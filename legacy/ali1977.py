@@ -33,7 +33,7 @@ import threading
 
 import numpy as np
 
-from ..checks import INTEGER_MAX, as_real4, integer, parameter, real4_array, speed_rpm, weight_lbf
+from ..checks import INTEGER_MAX, as_real4, integer, link_length, parameter, real4_array, speed_rpm, weight_lbf
 from ..errors import AssemblyError, SingularPositionError
 from ..port.ali1977.conditioning import check_precision, condition, spread
 from ..port.ali1977.fourbar import Cognate, Lengths, warn_listing_beta
@@ -71,7 +71,7 @@ def _check_inputs(lengths, alp, rpm, mass_lbf, area, modulus, inertia, step_deg)
     """The port's rules (linkrepro.checks): lengths positive, alp finite, the listing's speed,
     weight and REAL*4 section values; returns the number of input angles."""
     for name, value in zip(("l1", "l2", "l3", "l4", "l5"), lengths):
-        parameter(f"link length {name}", value, positive=True, largest=None)
+        link_length(f"link length {name}", value)
     parameter("alp", alp, largest=None)
     speed_rpm(rpm)
     weight_lbf("mass (or density)", mass_lbf)

@@ -121,6 +121,17 @@ def speed_rpm(value) -> float:
     return value
 
 
+def link_length(name: str, value) -> float:
+    """A link length (in) of the K.E.D. four-bar: from 1/LARGEST to LARGEST (1e-6 to 1e6 in).
+    The analysis forms squares, cubes and products of the lengths with the speed squared;
+    outside that range they underflow or overflow in double precision (a length of 1e-170 in
+    made the Freudenstein constants divide by zero) and every engine would be silently wrong."""
+    value = parameter(name, value, positive=True)
+    if value < 1.0 / LARGEST:
+        raise ValueError(f"{name} = {value!r} is out of range (at least {1.0 / LARGEST:g} in)")
+    return value
+
+
 def weight_lbf(name: str, value) -> float:
     """A weight (lbf) or weight density (lbf/in^3): finite, >= 0, representable in REAL*4."""
     value = parameter(name, value, largest=None)

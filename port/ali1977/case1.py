@@ -526,15 +526,36 @@ def source_mechanics(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None 
     ``speed_type`` is how the listing stores the speed: the Case I listing in the
     INTEGER N, Cases II and III in a REAL*4 variable.  ``extra["linkage"]`` is the
     SourceLinkage (``pin_accelerations``: the crank and follower pins', Case II).
+    SingularPositionError where a position, acceleration or beta is not finite (a change
+    point, a dead centre), as the programs report it.
     """
-    return source_linkage(deg, lengths, alp, rpm, quirks, speed_type).path_point(lengths.l2)
+    return _finite(source_linkage(deg, lengths, alp, rpm, quirks, speed_type).path_point(lengths.l2), "source")
+
+
+def _finite(mech: Mechanics, who: str) -> Mechanics:
+    """``mech``, or SingularPositionError at the first input angle where its position,
+    acceleration or beta is not finite."""
+    deg, axis = mech.extra["linkage"].deg, np.ndim(mech.xp) - 1        # the angles' axis: 1 for n points
+
+    def by_angle(values):
+        return np.moveaxis(np.asarray(values), axis, 0).reshape(len(deg), -1)
+
+    check_finite(deg, who, xp=by_angle(mech.xp), yp=by_angle(mech.yp),
+                 acceleration_and_beta=np.concatenate([by_angle(mech.acc), by_angle(mech.beta)], axis=1))
+    return mech
 
 
 def case1_deflection(mech: Mechanics, mass_lbf: float, section: Section, quirks: Quirks):
-    """dx, dy (in, in the source frame unless D025 is on) and rot (rad) of the path point."""
+    """dx, dy (in, in the source frame unless D025 is on) and rot (rad) of the path point;
+    SingularPositionError where they are not finite."""
+    expect("mech", mech, Mechanics)
     mass_lbf = weight_lbf("mass_lbf", mass_lbf)
     expect("section", section, Section)
-    return _case1_deflection(mech, mass_lbf, section, quirks)
+    expect("quirks", quirks, Quirks)
+    dx, dy, rot = _case1_deflection(mech, mass_lbf, section, quirks)
+    if "linkage" in mech.extra:
+        check_finite(mech.extra["linkage"].deg, "case I", dx=dx, dy=dy, rot=rot)
+    return dx, dy, rot
 
 
 @ieee
@@ -672,7 +693,7 @@ def cognate_mechanics(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None
     linkage = cognate_linkage(deg, lengths, alp, rpm, quirks)
     if extender is not None:
         extender = parameter("extender", extender, largest=None)
-    return linkage.path_point(extender)
+    return _finite(linkage.path_point(extender), "cognate")
 
 
 def cognate_case1(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = None,

@@ -60,8 +60,8 @@ def node_count(n) -> int:
 def node_positions(l2: float, n: int, spacing: float | None = None) -> np.ndarray:
     """Distances (in) of the n nodes from the crank pin, tip first: L2, L2 - s, ..., L2 - (n-1) s,
     with s = L2/n, or ``spacing`` (the listing's blocks: LISTING_EXTENDER/n, 2 in for n = 5)."""
-    n = node_count(n)
-    step = l2 / n if spacing is None else spacing
+    l2, n = parameter("l2", l2, positive=True, largest=None), node_count(n)
+    step = l2 / n if spacing is None else parameter("spacing", spacing, positive=True, largest=None)
     positions = l2 - np.arange(n) * step
     if not positions[-1] > 0.0:
         raise ValueError(f"l2={l2}: nodes L2, L2-{step:g}, ..., L2-{(n - 1) * step:g} need l2 > {(n - 1) * step:g} in")

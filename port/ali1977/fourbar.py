@@ -19,7 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
-from ...checks import parameter
+from ...checks import link_length
 from ...errors import AssemblyError, ListingBugWarning, SingularPositionError
 from .. import libm
 from .conditioning import closes_within_rounding
@@ -36,8 +36,7 @@ class Lengths:
 
     def __post_init__(self):
         for name in ("l1", "l2", "l3", "l4", "l5"):
-            object.__setattr__(self, name, parameter(f"link length {name}", getattr(self, name), positive=True,
-                                                     largest=None))
+            object.__setattr__(self, name, link_length(f"link length {name}", getattr(self, name)))
 
 
 def freudenstein_constants(l1, l3, l4, l5):
