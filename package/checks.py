@@ -145,15 +145,24 @@ def angles_deg(name: str, value, *, largest: float = LARGEST) -> np.ndarray:
     """Input angles (deg) as a float64 array: TypeError unless an array of numbers (not bool,
     str or object), ValueError unless non-empty, 1-D (a scalar is not) and finite, within
     ``largest``."""
-    deg = real_array(name, value)
-    if deg.ndim != 1 or deg.size == 0:
-        raise ValueError(f"{name} must be a non-empty 1-D array of angles (deg), got shape {deg.shape}")
-    if not np.all(np.isfinite(deg)):
-        raise ValueError(f"{name} must be finite, got {deg[~np.isfinite(deg)][0]!r} at index "
-                         f"{int(np.argmax(~np.isfinite(deg)))}")
-    if np.any(np.abs(deg) > largest):
-        raise ValueError(f"{name} is out of range (at most {largest:g} deg in magnitude)")
-    return deg
+    return _angles(name, real_array(name, value), "deg", largest)
+
+
+def angles_rad(name: str, value) -> np.ndarray:
+    """Crank angles (rad) of a lower-level function as a 1-D float64 array (a scalar is one
+    angle): otherwise the rules of ``angles_deg``, within LARGEST degrees."""
+    return _angles(name, np.atleast_1d(real_array(name, value)), "rad", math.radians(LARGEST))
+
+
+def _angles(name: str, values: np.ndarray, unit: str, largest: float) -> np.ndarray:
+    if values.ndim != 1 or values.size == 0:
+        raise ValueError(f"{name} must be a non-empty 1-D array of angles ({unit}), got shape {values.shape}")
+    if not np.all(np.isfinite(values)):
+        raise ValueError(f"{name} must be finite, got {values[~np.isfinite(values)][0]!r} at index "
+                         f"{int(np.argmax(~np.isfinite(values)))}")
+    if np.any(np.abs(values) > largest):
+        raise ValueError(f"{name} is out of range (at most {largest:g} {unit} in magnitude)")
+    return values
 
 
 def finite_matrix(name: str, value, shape: tuple[int, int] | None = None) -> np.ndarray:

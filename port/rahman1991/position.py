@@ -3,7 +3,7 @@
 The printed method: Newton-Raphson on the dual-number loop closure M1 L2 L3 M4 = I
 (eqs. 5-26): six equations, five joint variables q = (theta2, eta2, theta3, eta3, S4), the
 step Delta = (A'A)^-1 A' V.  The 1996 program by the same author runs exactly this
-iteration; its compiled kernel (``slider_crank.newton.newton``, equal to the legacy build bit
+iteration; its compiled kernel (``slider_crank._newton.newton``, equal to the legacy build bit
 for bit) serves here too, with the 1996 program's stopping rule (every |Delta| <= 1e-7, at
 most 150 steps), since the 1991 thesis gives none, and A'A solved by LU with pivoting (the
 thesis prints no inverse).  When Newton fails at a position that follows a
@@ -24,7 +24,8 @@ from dataclasses import dataclass, replace
 import numpy as np
 from numba import njit
 
-from ..slider_crank import newton as kernel
+from ...checks import LARGEST, angles_rad, parameter, real_array
+from ..slider_crank import _newton as kernel
 from ..slider_crank.geometry import CsspInputs, LoopConstants, initial_estimate
 from .data import GscInputs
 
@@ -90,9 +91,18 @@ def assembles(inputs: GscInputs, theta1, s1) -> np.ndarray:
 def newton(theta1: float, q: np.ndarray, c: LoopConstants, setup: NewtonSetup = THESIS_1991) -> tuple[np.ndarray, bool, int]:
     """The printed iteration from q (5,) at one crank angle (rad): (answer, converged, steps).
     Every |Delta| <= tol (c.newton_tol, 1e-7, unless the setup says) stops it, 150 steps
-    (setup.max_iterations) fail it; a singular A'A or a non-finite step fails at once."""
+    (setup.max_iterations) fail it; a singular A'A or a non-finite step fails at once.
+    TypeError/ValueError for arguments that are not a finite angle, a finite 5-vector, a
+    ``LoopConstants`` and a ``NewtonSetup``."""
+    if not isinstance(c, LoopConstants) or not isinstance(setup, NewtonSetup):
+        raise TypeError(f"c must be LoopConstants and setup a NewtonSetup, got {type(c).__name__}, "
+                        f"{type(setup).__name__}")
+    theta1 = parameter("theta1", theta1, largest=math.radians(LARGEST))
+    q = real_array("q", q)
+    if q.shape != (5,) or not np.all(np.isfinite(q)):
+        raise ValueError(f"q must be 5 finite joint variables (theta2, eta2, theta3, eta3 rad, s4 in), got {q!r}")
     tol = c.newton_tol if setup.tol is None else setup.tol
-    q, status, steps = kernel.newton(float(theta1), np.asarray(q, dtype=float), c.a1, c.a2, c.a4, c.alpha4,
+    q, status, steps = kernel.newton(theta1, q, c.a1, c.a2, c.a4, c.alpha4,
                                      c.s1, tol, setup.max_iterations, setup.printed_inverse)
     return q, status == kernel.OK, int(steps)
 
@@ -114,7 +124,7 @@ def _matvec(m, v):
 
 
 @njit(cache=True)
-def residual(theta1, q, a1, a2, a4, alp4, s1):
+def _residual(theta1, q, a1, a2, a4, alp4, s1):
     """Loop-closure error r = (B - I real, B dual) (18,) and its Jacobian (18, 5), dB/dq_j =
     H_j B, at crank angle theta1 (rad) and q (5,); B, H_j as the listing forms them."""
     h, (br, bd) = kernel.loop_product(theta1, q, a1, a2, a4, alp4, s1)
@@ -140,11 +150,11 @@ def _identity(h):
 
 
 @njit(cache=True)
-def dfp(theta1, q, a1, a2, a4, alp4, s1, iterations):
+def _dfp(theta1, q, a1, a2, a4, alp4, s1, iterations):
     """Davidon-Fletcher-Powell descent on f = ||r||^2 from q with a backtracking (Armijo)
     line search: at most ``iterations`` steps; stops where no step decreases f.  Written
     out element by element (each as numpy's vector expression of it would round)."""
-    r, jac = residual(theta1, q, a1, a2, a4, alp4, s1)
+    r, jac = _residual(theta1, q, a1, a2, a4, alp4, s1)
     q, f, grad, hinv = q.copy(), _dot(r, r), _matvec(jac.T, r), np.empty((5, 5))
     trial, s, y = np.empty(5), np.empty(5), np.empty(5)
     for k in range(5):
@@ -162,7 +172,7 @@ def dfp(theta1, q, a1, a2, a4, alp4, s1, iterations):
         while True:
             for k in range(5):
                 trial[k] = q[k] + step * direction[k]
-            r, jac = residual(theta1, trial, a1, a2, a4, alp4, s1)
+            r, jac = _residual(theta1, trial, a1, a2, a4, alp4, s1)
             if _dot(r, r) <= f + 1e-4 * step * slope:      # (a NaN f is no decrease)
                 break
             step *= 0.5
@@ -215,7 +225,7 @@ def _sweep(theta1, s1, ok, q0, a1, a2, a4, alp4, tol, max_iterations, printed, u
         if done:
             code[i] = _NEWTON
         elif use_dfp and (i == 0 or code[i - 1] != _NOT_CONVERGED):      # DFP only after a converged position
-            start = dfp(theta1[i], guess, a1, a2, a4, alp4, s1[i], DFP_ITERATIONS)
+            start = _dfp(theta1[i], guess, a1, a2, a4, alp4, s1[i], DFP_ITERATIONS)
             q, status, steps[i] = kernel.newton(theta1[i], start, a1, a2, a4, alp4, s1[i], tol, max_iterations, printed)
             done = status == kernel.OK
             code[i] = _DFP_THEN_NEWTON if done else _NOT_CONVERGED
@@ -223,7 +233,7 @@ def _sweep(theta1, s1, ok, q0, a1, a2, a4, alp4, tol, max_iterations, printed, u
             for k in range(5):
                 q_out[i, k] = q[k]
             guess = q
-            r, _ = residual(theta1[i], q, a1, a2, a4, alp4, s1[i])
+            r, _ = _residual(theta1[i], q, a1, a2, a4, alp4, s1[i])
             closure[i] = math.sqrt(_dot(r, r))
         elif stop_at_failure:
             break
@@ -235,8 +245,12 @@ def positions(inputs: GscInputs, theta1, use_dfp: bool = True, stop_at_failure: 
     """Solve every crank angle theta1 (rad, in sweep order) by the printed method.
 
     A failed angle leaves the next one to start from the last answer, or
-    (``stop_at_failure``) ends the sweep, as the thesis's program stops."""
-    th = np.asarray(theta1, dtype=float)
+    (``stop_at_failure``) ends the sweep, as the thesis's program stops.  TypeError unless
+    ``inputs`` is GscInputs and ``setup`` a NewtonSetup; the angles as ``checks.angles_rad``."""
+    if not isinstance(inputs, GscInputs) or not isinstance(setup, NewtonSetup):
+        raise TypeError(f"inputs must be GscInputs and setup a NewtonSetup, got {type(inputs).__name__}, "
+                        f"{type(setup).__name__}")
+    th = angles_rad("theta1", theta1)
     s1 = inputs.axial(th)[0]
     ok = assembles(inputs, th, s1) if setup.check_assembly else np.ones(th.size, dtype=bool)
     c = constants(inputs, s1[0], setup.real4)

@@ -10,7 +10,7 @@ reactions of the listing's equations (the 1991 method, eqs. 62-69).  Every quirk
 Units: inch, lbf, second, radians.  Arrays are over crank positions (n), point masses
 (9) and components (3).  The Newton iteration is sequential (each position starts from
 the previous one's answer, as printed) and compiled in the listing's order of operations
-(``slider_crank.newton``: it is chaotic where it wanders, so only the same roundings give the
+(``slider_crank._newton``: it is chaotic where it wanders, so only the same roundings give the
 same answer); everything after it is vectorised.
 """
 from __future__ import annotations
@@ -21,7 +21,7 @@ import numpy as np
 
 from ...checks import angles_deg, finite_matrix, listing_condition, refuse_singular_position
 from ...errors import ConvergenceError, SingularPositionError
-from ..slider_crank import newton as kernel
+from ..slider_crank import _newton as kernel
 from .data import Constants
 from .objective import UnitLoads
 from .quirks import CsspQuirks
@@ -89,7 +89,7 @@ def printed_inverse(s) -> np.ndarray:
     return b
 
 
-def loop_operators(theta1, q: np.ndarray, c: Constants) -> tuple[DualMatrix, DualMatrix]:
+def _loop_operators(theta1, q: np.ndarray, c: Constants) -> tuple[DualMatrix, DualMatrix]:
     """H_j = G_j Q_j G_j' for q (..., 5) = (theta2, eta2, theta3, eta3, s4), stacked
     (5, ..., 3, 3), and the loop product B = M1 L2 L3 M4: d B / d q_j = H_j B (eqs.
     2.18-2.24; Rahman 1991 eqs. 11-18).  theta1 and the fields of c broadcast with q[..., 0]."""
@@ -130,7 +130,7 @@ class Motion:
 def listing_pass(crank_deg: np.ndarray, q0: np.ndarray, c: Constants, printed: bool = True) -> Motion:
     """One pass of the listing's DO 400 loop over the crank angles (deg): at each, the
     printed Newton from the last answer, then the rates by VM, VV and AV (constant crank
-    speed), compiled in the listing's order of operations (``slider_crank.newton``).
+    speed), compiled in the listing's order of operations (``slider_crank._newton``).
 
     Raises where the listing STOPs, at the same crank angle: ConvergenceError after 150
     Newton evaluations, SingularPositionError when INVERSE meets a zero pivot (in the

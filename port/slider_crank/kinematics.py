@@ -23,7 +23,8 @@ from types import SimpleNamespace
 import numpy as np
 
 from ...errors import AssemblyError, SingularPositionError
-from .geometry import CsspInputs
+from ...checks import angles_rad, real_array
+from .geometry import CsspInputs, LoopConstants
 
 TINY = 1e-9  # relative distance to a singular position below which we refuse
 
@@ -92,14 +93,16 @@ def kinematics(geom: Geometry, theta1_rad, s1_jet=None) -> SimpleNamespace:
     Jacobian in s4 and the rod's angles per unit rod length, [k4, k1 x u, du/deta2]), which
     grows as 2/|u.k4| towards a toggle and as 1/cos(eta2) towards a locked Hooke joint.
     """
-    th = np.atleast_1d(np.asarray(theta1_rad, dtype=float))
+    if not isinstance(geom, (CsspInputs, LoopConstants)):
+        raise TypeError(f"geom must be CsspInputs or LoopConstants, got {type(geom).__name__}")
+    th = angles_rad("theta1_rad", theta1_rad)
     deg, n = np.degrees(th), th.size
     one, zero = np.zeros((3, n)), np.zeros((3, n))
     one[0] = 1.0
     t = np.stack([th, np.full(n, geom.omega), np.zeros(n)])
     cth, sth = _cos(t), _sin(t)
     sa, ca = np.sin(geom.alpha4), np.cos(geom.alpha4)
-    s1 = geom.s1 * one if s1_jet is None else np.asarray(s1_jet, dtype=float).reshape(3, n)
+    s1 = geom.s1 * one if s1_jet is None else _s1_jet(s1_jet, n)
     P = np.stack([geom.a1 * cth, geom.a1 * sth, s1], axis=-1)
     b = geom.a1 * sa * sth + ca * s1
     c = 2.0 * geom.a1 * geom.a4 * cth + _mul(s1, s1) + (geom.a4 ** 2 + geom.a1 ** 2 - geom.a2 ** 2) * one
@@ -135,6 +138,14 @@ def kinematics(geom: Geometry, theta1_rad, s1_jet=None) -> SimpleNamespace:
         for order, suffix in enumerate(("", "d", "dd")):
             setattr(kin, name + suffix, jet[order])
     return kin
+
+
+def _s1_jet(value, n: int) -> np.ndarray:
+    """The crank's axial offset and its two time derivatives (3, n): in, in/s, in/s^2."""
+    jet = real_array("s1_jet", value)
+    if jet.size != 3 * n or not np.all(np.isfinite(jet)):
+        raise ValueError(f"s1_jet must hold 3 x {n} finite numbers (S1 and its rates), got shape {jet.shape}")
+    return jet.reshape(3, n)
 
 
 def _refuse(distance, deg, why):

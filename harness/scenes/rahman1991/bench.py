@@ -18,12 +18,12 @@ from ....port.slider_crank.geometry import CsspInputs
 from ....port.slider_crank.kinematics import kinematics
 from ...bench import TRANSCENDENTAL, Computation, Knob, crank_grid, step_label, relative_error, mprd
 
-#: one step of the spatial Newton (slider_crank.newton.newton): sin, cos of five angles, 13 dual
+#: one step of the spatial Newton (slider_crank._newton.newton): sin, cos of five angles, 13 dual
 #: 3x3 products (three products and a sum each), ~60 for the entries; A'A, its 5x5 inverse
 #: (2 n^3), (A'A)^-1 A', Delta
 NEWTON_STEP = (10 * TRANSCENDENTAL + 13 * (3 * mprd(3, 3, 3) + 9) + 60 + mprd(5, 6, 5) + 2 * 5 ** 3
                + mprd(5, 5, 6) + mprd(5, 6, 1))
-#: the listing's DOT, DDOT (slider_crank.newton.rates): six sin/cos, the pseudo-inverse of VM, two
+#: the listing's DOT, DDOT (slider_crank._newton.rates): six sin/cos, the pseudo-inverse of VM, two
 #: products, ~120 for VV and AV
 NEWTON_RATES = 6 * TRANSCENDENTAL + mprd(5, 6, 5) + 2 * 5 ** 3 + mprd(5, 5, 6) + 2 * mprd(5, 6, 1) + 120
 #: the closed loop with second-order jets (slider_crank.kinematics.kinematics): ~10 sin/cos/sqrt/atan2,

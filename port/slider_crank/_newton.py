@@ -1,5 +1,9 @@
 """The printed Newton-Raphson of the spatial slider-crank loop, compiled, in the listing's order.
 
+Private: kernels on bare, unchecked numbers (a NaN gives a NaN or a failure status); users call
+``rahman1996.listing.listing_pass`` and ``rahman1991.position.newton`` / ``positions``, which
+check their arguments (``linkrepro.checks``).
+
 Rahman's 1991 method (eqs. 5-26) and his 1996 program (Appendix B, statements 10 to the
 DDOT block) solve the dual-number loop closure M1 L2 L3 M4 = I for q = (theta2, eta2,
 theta3, eta3, s4) by DELTA = (A'A)^-1 A' V, position after position, each from the last
