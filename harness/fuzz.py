@@ -15,8 +15,16 @@ Outcomes of a call:
   included), ``nan`` (a non-finite value in a result from finite inputs), ``angle`` (a
   LinkageError without its input angle from a function that has input angles),
   ``accepted`` (a NaN or infinite argument, or an angle array that is not 1-D, returned a
-  result instead of a ValueError), ``crash`` (the worker died: a signal, a FORTRAN STOP)
-  and ``hang`` (the timeout).
+  result instead of a ValueError), ``violated`` (a result that breaks what the function
+  promises: a QP solution outside its constraints, a corrected cognate whose coupler point
+  leaves the source's), ``crash`` (the worker died: a signal, a FORTRAN STOP) and ``hang``
+  (the timeout).
+
+The valid values reach the edges on purpose: link lengths scaled as a family over the whole
+domain, coupler triangles of every shape, four-bars on or a few ulps off a toggle, QPs with
+rows and Hessians scaled by 1e-150 to 1e150, slider-cranks next to their singular
+position; the hostile values include subnormal and huge floats and integers beyond any
+float (10**400).
 
 Usage::
 
@@ -52,7 +60,7 @@ from typing import Callable
 
 from .progress import Bar
 
-FINDINGS = ("untyped", "nan", "angle", "accepted", "crash", "hang")
+FINDINGS = ("untyped", "nan", "angle", "accepted", "violated", "crash", "hang")
 OUTCOMES = ("ok", "typed") + FINDINGS
 STARTUP_SECONDS = 900          # importing linkrepro may rebuild the FORTRAN first
 MEMORY_BYTES = 4 << 30         # address space of a worker: a runaway allocation is a MemoryError
@@ -76,10 +84,11 @@ class Pool:
 
 _SHARED = ("None", "'abc'", "'1.5'", "(1+2j)", "True", "object()", "{}", "[1.0, 2.0]")
 FLOAT = Pool("num", ("nan", "inf", "-inf", "0.0", "-1.0", "1e300", "-1e300", "1e-300", "-1e-300",
+                     "5e-324", "-5e-324", "1.7976931348623157e308", "10**400", "-10**400",
                      "np.float32('nan')", "np.int64(7)", "10**30", "np.array([1.0, 2.0])",
                      "np.array([])") + _SHARED)
 INT = Pool("num", ("0", "-1", "2.5", "nan", "inf", "10**9", "10**30", "2**63", "-2**31", "3.0",
-                   "np.int8(3)", "np.array([1, 2])") + _SHARED)
+                   "10**400", "-10**400", "np.int8(3)", "np.array([1, 2])") + _SHARED)
 #: angle arrays that must be refused (a 0-D array, like a scalar, may count as one angle)
 NOT_1D = ("np.array([[0.0, 30.0], [60.0, 90.0]])", "np.zeros((2, 0))", "np.ones((1, 1, 3))")
 ANGLES = Pool("angles", NOT_1D + ("np.array(30.0)", 
@@ -210,13 +219,34 @@ def _quirk_names(family: str) -> list:
 STEPS = ("20.0", "10.0", "1.0", "0.1", "45.0", "360.0", "7.5", "0.0018")
 
 
+def ked_lengths(rng) -> list[str]:
+    """l1..l5 (in) of a K.E.D. four-bar: near the example; the example scaled as a family
+    (1e-7 to 1e7: the domain's limits, 1e-6 and 1e6 in, and beyond); a coupler triangle of
+    any shape (l2 from 0.02 to 5 times l3); or a four-bar on a toggle (l1 + l5 = l3 + l4 or
+    l5 - l1 = |l3 - l4|), exactly or a few ulps or 1e-9 off."""
+    example = (10.0, 10.0, 30.0, 25.0, 30.0)
+    kind = rng.choice(("near", "near", "scaled", "triangle", "toggle"))
+    if kind == "scaled":
+        factor = 10.0 ** rng.uniform(-7.0, 6.6)
+        return [repr(v * factor) for v in example]
+    values = [float(near(rng, v, spread=0.15)) for v in example]
+    if kind == "triangle":
+        values[1] = values[2] * 10.0 ** rng.uniform(-1.7, 0.7)
+    elif kind == "toggle":
+        l1, _, l3, l4, _ = values
+        target = l3 + l4 - l1 if rng.random() < 0.5 else l1 + abs(l3 - l4)
+        nudge = rng.choice((0.0, 0.0, 2.0**-52, -2.0**-52, 4 * 2.0**-52, 1e-9, -1e-9))
+        values[4] = target * (1.0 + nudge)
+    return [repr(v) for v in values]
+
+
 def legacy_ked(func: str, mass: str):
     """ali1977.case{1,2,3}_{source,cognate}: keyword parameters, printed values as defaults."""
     def spec(rng):
-        lengths = [("l1", 10.0), ("l2", 10.0), ("l3", 30.0), ("l4", 25.0), ("l5", 30.0)]
-        args = [Arg(name, near(rng, v, spread=0.15), FLOAT, True) for name, v in lengths]
+        names = ("l1", "l2", "l3", "l4", "l5")
+        args = [Arg(name, value, FLOAT, True) for name, value in zip(names, ked_lengths(rng))]
         mass_value = num(rng, 0.0, 10.0) if mass == "mass_lbf" else num(rng, 0.0, 0.3)
-        args += [Arg("alp", num(rng, -6.3, 6.3), FLOAT, True),
+        args += [Arg("alp", ked_alp(rng), FLOAT, True),
                  Arg("rpm", rng.choice(["300.0", "400.0", num(rng, -3000, 5000)]), FLOAT, True),
                  Arg(mass, mass_value, FLOAT, True),
                  Arg("area", num(rng, 0.01, 1.0), FLOAT, True),
@@ -227,8 +257,13 @@ def legacy_ked(func: str, mass: str):
     return spec
 
 
+def ked_alp(rng) -> str:
+    """The coupler point's angle (rad): any quadrant, or on an axis."""
+    return rng.choice([num(rng, -6.3, 6.3), num(rng, -6.3, 6.3), "0.0", "np.pi", "-np.pi / 2", "3 * np.pi / 2"])
+
+
 def lengths_call(rng) -> Call:
-    return Call("Lengths", [Arg(None, near(rng, v, spread=0.15), FLOAT) for v in (10.0, 10.0, 30.0, 25.0, 30.0)])
+    return Call("Lengths", [Arg(None, value, FLOAT) for value in ked_lengths(rng)])
 
 
 def section_call(rng) -> Call:
@@ -243,7 +278,7 @@ def port_ked(module: str, func: str, case: int, presets: tuple):
         if case == 3:
             args.append(Arg("n", str(rng.randint(1, 40)), INT, True))
         args += [Arg("lengths", lengths_call(rng), CONTAINER, True),
-                 Arg("alp", rng.choice(["None", num(rng, -6.3, 6.3)]), FLOAT, True),
+                 Arg("alp", rng.choice(["None", ked_alp(rng)]), FLOAT, True),
                  Arg("rpm", rng.choice(["300.0", num(rng, -3000, 5000)]), FLOAT, True),
                  Arg("mass_lbf" if case == 1 else "density",
                      num(rng, 0.0, 10.0) if case == 1 else num(rng, 0.0, 0.3), FLOAT, True),
@@ -256,6 +291,16 @@ def port_ked(module: str, func: str, case: int, presets: tuple):
 
 
 def cssp_inputs(rng) -> Call:
+    """The CSSP's geometry: near the example, or (one call in four) next to its singular
+    position, the rod just long enough to reach (a2 = |a1 + a4| (1 + 1e-3 ... 1e-12), the
+    issue's family a1 = 2, a2 = 3 (1 + 1e-8), a4 = 1, alpha4 = 90 deg, s1 = 0)."""
+    if rng.random() < 0.25:
+        a1, a4 = round(rng.uniform(0.5, 4.0), 4), round(rng.uniform(-3.0, 3.0), 4)
+        reach = abs(a1 + a4) or 1.0
+        a2 = repr(reach * (1.0 + 10.0 ** -rng.uniform(3.0, 12.0)))
+        return Call("CsspInputs", [Arg("a1", repr(a1), FLOAT, True), Arg("a2", a2, FLOAT, True),
+                                   Arg("a4", repr(a4), FLOAT, True), Arg("alpha4_deg", "90.0", FLOAT, True),
+                                   Arg("s1", "0.0", FLOAT, True), Arg("rpm", "3000.0", FLOAT, True)])
     return Call("CsspInputs", [
         Arg("a1", near(rng, 2.0, lo=0.2, hi=10.0), FLOAT, True),
         Arg("a2", near(rng, 8.0, lo=1.0, hi=30.0), FLOAT, True),
@@ -299,14 +344,21 @@ def qp_spec(func: str):
             n = rng.choice([rng.randint(7, 61), 60, 61])
             m = rng.choice([rng.randint(n, 201), 200, 201])
         rank = f", rank={rng.randint(1, n)}" if rng.random() < 0.3 else ""
-        h = f"spd({n}, {any_seed(rng)}{rank})"
-        args = [Arg(None, h, MATRIX), Arg(None, f"rand(({n},), {any_seed(rng)})", VECTOR)]
+        objective, rows = scale_of(rng), scale_of(rng)        # H and g by one factor, each row by its own
+        h = f"spd({n}, {any_seed(rng)}{rank}){objective}"
+        args = [Arg(None, h, MATRIX), Arg(None, f"rand(({n},), {any_seed(rng)}){objective}", VECTOR)]
         if m:
-            args += [Arg("a", f"rand(({m}, {n}), {any_seed(rng)})", MATRIX),
-                     Arg("b", f"rand(({m},), {any_seed(rng)})", VECTOR),
+            row_scale = f" * 10.0 ** rand(({m}, 1), {any_seed(rng)}).clip(-3, 3) * 50" if rows else ""
+            args += [Arg("a", f"(rand(({m}, {n}), {any_seed(rng)}){row_scale})", MATRIX),
+                     Arg("b", f"(rand(({m}, 1), {any_seed(rng)}){row_scale})[:, 0]", VECTOR),
                      Arg("neq", str(rng.randint(0, m)), INT, True)]
         return Call(func, args)
     return spec
+
+
+def scale_of(rng) -> str:
+    """Nothing (half the time), or a factor 10**k, k from -150 to 150, as call text."""
+    return "" if rng.random() < 0.5 else f" * 1e{rng.randint(-150, 150)}"
 
 
 def mprd_spec(rng) -> Call:
@@ -329,6 +381,7 @@ class Entry:
     spec: Callable
     angles: bool = False
     scrub: str | None = None
+    check: str | None = None
 
 
 def entries() -> list:
@@ -349,13 +402,16 @@ def entries() -> list:
                 VECTOR, True)]),
               angles=True),
         Entry("rahman1996.inverse", lambda rng: Call("rahman1996.inverse", [Arg(None, matrix5(rng), MATRIX)])),
-        Entry("rahman1996.qprog", qp_spec("rahman1996.qprog")),
+        Entry("rahman1996.qprog", qp_spec("rahman1996.qprog"), check="qp"),
         Entry("port.ali1977.case1.source_case1", port_ked("port.ali1977.case1", "source_case1", 1, ()), angles=True),
-        Entry("port.ali1977.case1.cognate_case1", port_ked("port.ali1977.case1", "cognate_case1", 1, ()), angles=True),
+        Entry("port.ali1977.case1.cognate_case1", port_ked("port.ali1977.case1", "cognate_case1", 1, ()), angles=True,
+              check="cognate"),
         Entry("port.ali1977.case2.case2_source", port_ked("port.ali1977.case2", "case2_source", 2, case2), angles=True),
-        Entry("port.ali1977.case2.case2_cognate", port_ked("port.ali1977.case2", "case2_cognate", 2, case2), angles=True),
+        Entry("port.ali1977.case2.case2_cognate", port_ked("port.ali1977.case2", "case2_cognate", 2, case2), angles=True,
+              check="cognate"),
         Entry("port.ali1977.case3.case3_source", port_ked("port.ali1977.case3", "case3_source", 3, case3), angles=True),
-        Entry("port.ali1977.case3.case3_cognate", port_ked("port.ali1977.case3", "case3_cognate", 3, case3), angles=True),
+        Entry("port.ali1977.case3.case3_cognate", port_ked("port.ali1977.case3", "case3_cognate", 3, case3), angles=True,
+              check="cognate"),
         Entry("port.rahman1996.balance.balance", lambda rng: Call("port.rahman1996.balance.balance", [
             Arg("inputs", cssp_inputs(rng), CONTAINER, True),
             Arg("quirks", quirk_set(rng, "cssp", ("CSSP_PRINTED", "CSSP_CORRECTED")), QUIRKS, True)]), angles=True),
@@ -377,7 +433,7 @@ def entries() -> list:
         Entry("port.ali1977.case1.Section", section_call),
     ]
     if _port_qprog() is not None:
-        out.append(Entry("port.rahman1996.qprog.qprog", qp_spec("port.rahman1996.qprog.qprog")))
+        out.append(Entry("port.rahman1996.qprog.qprog", qp_spec("port.rahman1996.qprog.qprog"), check="qp"))
     return out
 
 
@@ -403,6 +459,7 @@ class Job:
     refused: tuple = ()         # names of arguments whose value must be refused
     hostile: tuple = ()         # name=value of every hostile argument
     timeout: float | None = None  # seconds before it counts as a hang (None: the run's)
+    check: str | None = None    # CHECKS: what a returned result must satisfy
 
 
 def make_job(entry: Entry, rng: random.Random) -> Job:
@@ -414,7 +471,7 @@ def make_job(entry: Entry, rng: random.Random) -> Job:
     text, chosen = call.render(rng)
     return Job(0, entry.name, text, entry.angles, entry.scrub,
                refused=tuple(label for label, _, refuses in chosen if refuses),
-               hostile=tuple(f"{label}={value}" for label, value, _ in chosen))
+               hostile=tuple(f"{label}={value}" for label, value, _ in chosen), check=entry.check)
 
 
 def generate(calls: int, seed_value: int, only: str | None = None) -> list:
@@ -480,7 +537,8 @@ def namespace() -> dict:
     return ns
 
 
-def execute(text: str, ns: dict, angles: bool = False, scrub: str | None = None, refused=()) -> dict:
+def execute(text: str, ns: dict, angles: bool = False, scrub: str | None = None, refused=(),
+            check: str | None = None) -> dict:
     """Evaluate one call text and classify what happened (everything but crash and hang)."""
     start = time.perf_counter()
     try:
@@ -489,8 +547,9 @@ def execute(text: str, ns: dict, angles: bool = False, scrub: str | None = None,
         out = describe_error(exc, angles)
     else:
         where = nonfinite(SCRUBS[scrub](result) if scrub else result)
-        outcome = "accepted" if refused else ("nan" if where else "ok")
-        out = {"outcome": outcome, "detail": where or ""}
+        broken = None if (where or refused or check is None) else CHECKS[check](arguments_of(text, ns), result)
+        outcome = "accepted" if refused else ("nan" if where else ("violated" if broken else "ok"))
+        out = {"outcome": outcome, "detail": where or broken or ""}
     out["seconds"] = round(time.perf_counter() - start, 4)
     return out
 
@@ -580,6 +639,56 @@ def _gsc_documented(frame):
 SCRUBS = {"gsc": _gsc_documented}
 
 
+# --- what a returned result must satisfy ---------------------------------------------------
+
+def arguments_of(text: str, ns: dict) -> tuple[list, dict]:
+    """The positional and keyword arguments a call text passes, each evaluated as the call
+    evaluates it."""
+    import ast
+    call = ast.parse(text, mode="eval").body
+
+    def value(node):
+        return eval(compile(ast.Expression(node), "<argument>", "eval"), dict(ns))   # noqa: S307 - our own text
+    return [value(a) for a in call.args], {k.arg: value(k.value) for k in call.keywords}
+
+
+def _qp_feasible(arguments, result) -> str | None:
+    """qprog's ``sol`` satisfies a[:neq] x = b[:neq] and a[neq:] x >= b[neq:] to 1e-8 of the
+    rows' own magnitudes (|a| |x| + |b|)."""
+    import numpy as np
+    args, kwargs = arguments
+    names = ("h", "g", "a", "b", "neq")
+    given = {**dict(zip(names, args)), **kwargs}
+    if given.get("a") is None:
+        return None
+    a, b = np.atleast_2d(np.asarray(given["a"], dtype=float)), np.asarray(given["b"], dtype=float)
+    neq, x = int(given.get("neq", 0)), np.asarray(result["sol"], dtype=float)
+    slack = a @ x - b
+    size = np.abs(a) @ np.abs(x) + np.abs(b)
+    worst = np.where(np.arange(len(b)) < neq, np.abs(slack), -slack) / np.where(size > 0, size, 1.0)
+    if worst.max(initial=0.0) > 1e-8:
+        k = int(np.argmax(worst))
+        return f"constraint {k} ({'equality' if k < neq else 'inequality'}) violated by {worst[k]:.3g} of its size"
+    return None
+
+
+def _cognate_coincides(arguments, result) -> str | None:
+    """With the cognate's turn corrected (cognate_beta_quadrant off) and double storage, the
+    cognate's coupler point is the source's at every angle (Roberts-Chebyshev)."""
+    import numpy as np
+    quirks = arguments[1].get("quirks")
+    if quirks is None or quirks.cognate_beta_quadrant or quirks.real4_storage:
+        return None
+    gap = np.hypot(result["cxp"] - result["xp"], result["cyp"] - result["yp"])
+    scale = np.abs(np.concatenate([result["xp"], result["yp"]])).max(initial=1e-300)
+    if gap.max() > 1e-9 * scale:
+        return f"the cognate's coupler point is {gap.max():.3g} in off the source's (scale {scale:.3g} in)"
+    return None
+
+
+CHECKS = {"qp": _qp_feasible, "cognate": _cognate_coincides}
+
+
 def _serve(conn, log_path: str) -> None:
     """Worker main: output to a log (FORTRAN writes to fd 1), limited memory, one call at a
     time until told to stop (None)."""
@@ -596,8 +705,8 @@ def _serve(conn, log_path: str) -> None:
     conn.send("ready")
     while (message := conn.recv()) is not None:
         os.ftruncate(1, 0)                   # the log holds this call's output only
-        text, angles, scrub, refused = message
-        conn.send(execute(text, ns, angles, scrub, refused))
+        text, angles, scrub, refused, check = message
+        conn.send(execute(text, ns, angles, scrub, refused, check))
 
 
 # --- the parent: workers, timeouts, replacements -----------------------------------------
@@ -623,7 +732,7 @@ class Worker:
         return self
 
     def submit(self, job: Job, timeout: float) -> None:
-        self.conn.send((job.text, job.angles, job.scrub, job.refused))
+        self.conn.send((job.text, job.angles, job.scrub, job.refused, job.check))
         self.job, self.deadline = job, time.monotonic() + (timeout if job.timeout is None else job.timeout)
 
     def log_tail(self, chars: int = 600) -> str:
@@ -730,6 +839,8 @@ def group_key(job: Job, res: dict) -> str:
         cause = "refusable argument returned a result: " + ", ".join(sorted(set(job.refused)))
     elif outcome == "nan":
         cause = "non-finite value in " + re.sub(r"\[[\d, ]*\]| = .*", "", res["detail"])
+    elif outcome == "violated":
+        cause = _normalise(res["detail"])
     elif outcome in ("crash", "hang"):
         cause = res["detail"]
     else:

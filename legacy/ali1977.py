@@ -13,12 +13,15 @@ g = 32.178*12 in/s^2, as the listing divides).
 
 Errors: ``TypeError`` for an argument that is not a real number (str, bool, complex,
 None, arrays), ``ValueError`` for bad parameters (checked here, before FORTRAN sees them:
-lengths, section values and step positive and finite, alp finite, |rpm| <= 2**31-1, a
-weight or density >= 0; and every value the listings hold in REAL*4 (the weight, the step)
-or assign from REAL*4 literals (section values, density) representable there: finite, and
-positive where it must be), ``AssemblyError`` when the four-bar (or its cognate) cannot
+lengths from 1e-6 to 1e6 in, section values and step positive and finite, |alp| <= 1e6 rad,
+|rpm| <= 2**31-1, a weight or density >= 0; and every value the listings hold in REAL*4
+(the weight, the step) or assign from REAL*4 literals (section values, density)
+representable there: finite, and positive where it must be), ``AssemblyError`` when the four-bar (or its cognate) cannot
 close at some input angle, ``SingularPositionError`` when a position gives a non-finite
-result (both with the input angle; the port raises the same, see ``linkrepro.port``).
+result or lies at a toggle to working precision (both with the input angle; the port raises
+the same, see ``linkrepro.port``).  Every program returns ``condition`` per input angle and
+warns (``linkrepro.PrecisionWarning``) where fewer than half its REAL*4 digits are left
+(``linkrepro.port.ali1977.conditioning``).
 The cognate programs warn (``linkrepro.ListingBugWarning``, register D141) where the
 listing's BETA turns the cognate into the wrong place: ``alp`` below 0 or above 180 deg, or
 a coupler triangle obtuse at the follower pin (l2 cos(alp) > l3).
@@ -68,11 +71,11 @@ def angle_grid(step_deg: float) -> int:
 
 
 def _check_inputs(lengths, alp, rpm, mass_lbf, area, modulus, inertia, step_deg):
-    """The port's rules (linkrepro.checks): lengths positive, alp finite, the listing's speed,
-    weight and REAL*4 section values; returns the number of input angles."""
+    """The port's rules (linkrepro.checks): lengths from 1e-6 to 1e6 in, |alp| <= 1e6, the
+    listing's speed, weight and REAL*4 section values; returns the number of input angles."""
     for name, value in zip(("l1", "l2", "l3", "l4", "l5"), lengths):
         link_length(f"link length {name}", value)
-    parameter("alp", alp, largest=None)
+    parameter("alp", alp)
     speed_rpm(rpm)
     weight_lbf("mass (or density)", mass_lbf)
     for name, value in (("area", area), ("modulus", modulus), ("inertia", inertia)):

@@ -502,7 +502,7 @@ def _source_linkage(deg: np.ndarray, lengths: Lengths, alp: float | None, rpm: f
         alp = ALP_SOURCE_LISTING if quirks.source_alpha_101 else pi / 3.0
     if rpm is None:
         rpm = 400.0 if quirks.source_rpm_400 else EXAMPLE.rpm
-    alp, rpm = parameter("alp", alp, largest=None), speed_rpm(rpm)
+    alp, rpm = parameter("alp", alp), speed_rpm(rpm)
     if quirks.real4_storage:
         rpm = float(np.trunc(rpm)) if speed_type == "INTEGER" else float(np.float32(rpm))
     l1, l3, l4, l5 = lengths.l1, lengths.l3, lengths.l4, lengths.l5
@@ -653,7 +653,7 @@ def _cognate_linkage(deg: np.ndarray, lengths: Lengths, alp: float | None, rpm: 
     pi = _pi(quirks)
     if alp is None:
         alp = pi / 3.0
-    alp, rpm = parameter("alp", alp, largest=None), speed_rpm(rpm)
+    alp, rpm = parameter("alp", alp), speed_rpm(rpm)
     speed = float(np.float32(rpm)) if quirks.real4_storage else float(rpm)       # S is REAL*4 in the listing
     l1, l2, l3, l4, l5 = lengths.l1, lengths.l2, lengths.l3, lengths.l4, lengths.l5
     if quirks.cognate_beta_quadrant:

@@ -90,3 +90,12 @@ def test_huge_integers_are_value_errors():
         ali1977.loc(1, 10**400, 1, 1, 0)
     with pytest.raises(ValueError):
         ali1977.case1_source(rpm=10**400)
+
+
+def test_an_alp_beyond_a_million_radians_is_refused_alike():
+    """alp = -1e300 rad: alp + t3 rounds to alp, and the corrected cognate's coupler point left
+    the source's by 8 in (found by the fuzz's coincidence check)."""
+    with pytest.raises(ValueError, match="alp"):
+        ali1977.case1_cognate(alp=-1e300)
+    with pytest.raises(ValueError, match="alp"):
+        case1.cognate_case1(DEG, alp=-1e300, quirks=CORRECTED)

@@ -47,3 +47,20 @@ def test_fuzz_slice_has_no_findings():
     assert len(report.results) == 200
     if report.findings:
         pytest.fail(fuzz.format_findings(report), pytrace=False)
+
+
+def test_checks_flag_results_that_break_their_promise():
+    """A returned QP solution outside its constraints and a corrected cognate off the source's
+    coupler point are findings ('violated'), not 'ok'."""
+    import numpy as np
+    from linkrepro.port.ali1977.quirks import CORRECTED, PRINTED
+    qp = fuzz.CHECKS["qp"]
+    assert "inequality" in qp(([np.eye(2), -np.ones(2)], {"a": [[1.0, 1.0]], "b": [3.0]}), {"sol": np.ones(2)})
+    assert qp(([np.eye(2), -np.ones(2)], {"a": [[1.0, 1.0]], "b": [3.0]}), {"sol": np.full(2, 1.5)}) is None
+    assert "equality" in qp(([np.eye(2), -np.ones(2), [[1.0, 1.0]], [3.0], 1], {}), {"sol": np.ones(2)})
+    apart = {"xp": np.array([1.0]), "yp": np.array([2.0]), "cxp": np.array([1.5]), "cyp": np.array([2.0])}
+    assert "off the source's" in fuzz.CHECKS["cognate"](([], {"quirks": CORRECTED}), apart)
+    assert fuzz.CHECKS["cognate"](([], {"quirks": PRINTED}), apart) is None     # the listing's D141 may do that
+    ns = fuzz.namespace()
+    assert fuzz.arguments_of("port.ali1977.case2.case2_cognate(np.array([1.0]), quirks=port.ali1977.case2.LISTING)",
+                             ns)[1]["quirks"] is ns["port"].ali1977.case2.LISTING
