@@ -661,7 +661,7 @@ def _qp_feasible(arguments, result) -> str | None:
     given = {**dict(zip(names, args)), **kwargs}
     if given.get("a") is None:
         return None
-    a, b = np.atleast_2d(np.asarray(given["a"], dtype=float)), np.asarray(given["b"], dtype=float)
+    a, b = np.atleast_2d(np.asarray(given["a"], dtype=float)), np.atleast_1d(np.asarray(given["b"], dtype=float))
     neq, x = int(given.get("neq", 0)), np.asarray(result["sol"], dtype=float)
     slack = a @ x - b
     size = np.abs(a) @ np.abs(x) + np.abs(b)

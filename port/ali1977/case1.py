@@ -65,15 +65,17 @@ __all__ = ["Section", "EXAMPLE", "Mechanics", "Linkage", "SourceLinkage", "Cogna
 @dataclass(frozen=True)
 class Section:
     """Uniform cross-section of every link: area (in^2), Young's modulus (psi),
-    second moment of area (in^4)."""
+    second moment of area (in^4); each positive and within what the listings' REAL*4 literals
+    hold (about 1.4e-45 to 3.4e38: a subnormal double modulus divided F by zero)."""
     area: float
     modulus: float
     inertia: float
 
     def __post_init__(self):
-        for name in ("area", "modulus", "inertia"):
-            object.__setattr__(self, name, parameter(f"section {name}", getattr(self, name), positive=True,
-                                                     largest=None))
+        for name in ("area", "modulus", "inertia"):     # positive, and what a REAL*4 literal can hold
+            value = parameter(f"section {name}", getattr(self, name), positive=True, largest=None)
+            as_real4(f"section {name}", value, positive=True)
+            object.__setattr__(self, name, value)
 
     @functools.lru_cache(maxsize=256)      # a pure function of the (immutable) section, asked for on every call
     def as_listing_holds(self, real4: bool) -> "Section":

@@ -99,3 +99,13 @@ def test_an_alp_beyond_a_million_radians_is_refused_alike():
         ali1977.case1_cognate(alp=-1e300)
     with pytest.raises(ValueError, match="alp"):
         case1.cognate_case1(DEG, alp=-1e300, quirks=CORRECTED)
+
+
+@pytest.mark.parametrize("value", [5e-324, 1e-50, 1e300])
+def test_section_values_beyond_a_real4_literal_are_refused_in_every_mode(value):
+    """A subnormal modulus divided the corrected port's F by zero (ZeroDivisionError)."""
+    from linkrepro.port.ali1977.case1 import Section
+    with pytest.raises(ValueError, match="section modulus"):
+        Section(0.2, value, 0.003)
+    with pytest.raises(ValueError, match="section modulus"):
+        ali1977.case1_source(modulus=value)
