@@ -327,6 +327,10 @@ def gsc_inputs(rng) -> Call:
         Arg("alpha", pick_or((0.0, 1.0, 2.0), 0.0, 3.0), FLOAT, True)])
 
 
+#: the printed first estimate of the CSSP's positions at the example (slider_crank.geometry)
+LISTING_START = "np.array([1.955193, 0.0, 4.327992, 0.0, 7.416198])"
+
+
 def matrix5(rng) -> str:
     """A 5 x 5 matrix: well-conditioned, random, singular, or needing a row exchange."""
     return rng.choice([f"spd(5, {any_seed(rng)})", f"rand((5, 5), {any_seed(rng)})", f"spd(5, {any_seed(rng)}, rank=3)",
@@ -427,6 +431,22 @@ def entries() -> list:
             Arg("crank_deg", angles(rng, most=12), ANGLES, True),
             Arg("quirks", quirk_set(rng, "gsc", ("GSC_PRINTED", "GSC_CORRECTED")), QUIRKS, True),
             Arg("strict", rng.choice(["False", "True"]), FLAG, True)]), angles=True, scrub="gsc"),
+        Entry("port.slider_crank.kinematics.kinematics", lambda rng: Call("port.slider_crank.kinematics.kinematics", [
+            Arg(None, cssp_inputs(rng), CONTAINER), Arg(None, f"np.radians({angles(rng)})", ANGLES)]), angles=True),
+        Entry("port.rahman1996.listing.listing_pass", lambda rng: Call("port.rahman1996.listing.listing_pass", [
+            Arg(None, angles(rng, lo=0.0, hi=360.0), ANGLES), Arg(None, LISTING_START, VECTOR),
+            Arg(None, Call("Constants.of", [Arg(None, cssp_inputs(rng), CONTAINER), Arg(None, "True", FLAG)]),
+                CONTAINER)]), angles=True),
+        Entry("port.rahman1996.mechanics.closed_loop_loads", lambda rng: Call(
+            "port.rahman1996.mechanics.closed_loop_loads", [
+                Arg(None, Call("Constants.of", [Arg(None, cssp_inputs(rng), CONTAINER), Arg(None, "False", FLAG)]),
+                    CONTAINER), Arg(None, angles(rng), ANGLES)]), angles=True),
+        Entry("port.rahman1991.position.positions", lambda rng: Call("port.rahman1991.position.positions", [
+            Arg(None, gsc_inputs(rng), CONTAINER), Arg(None, f"np.radians({angles(rng, most=12)})", ANGLES)]),
+              angles=True, scrub="positions"),
+        Entry("port.rahman1996.qprog.hessian_shift", lambda rng: Call("port.rahman1996.qprog.hessian_shift", [
+            Arg(None, f"spd({(n := rng.randint(1, 9))}, {any_seed(rng)}){scale_of(rng)}", MATRIX),
+            Arg(None, f"rand(({n},), {any_seed(rng)})", VECTOR, True)])),
         Entry("port.rahman1996.data.CsspInputs", lambda rng: cssp_inputs(rng)),
         Entry("port.rahman1991.data.GscInputs", lambda rng: gsc_inputs(rng)),
         Entry("port.ali1977.fourbar.Lengths", lengths_call),
@@ -524,7 +544,11 @@ def namespace() -> dict:
     import linkrepro.port.rahman1996.balance
     import linkrepro.port.rahman1996.listing
     import linkrepro.port.rahman1996.qprog
+    import linkrepro.port.rahman1996.mechanics
+    import linkrepro.port.rahman1991.position
+    import linkrepro.port.slider_crank.kinematics
     from linkrepro import port
+    from linkrepro.port.rahman1996.data import Constants
     from linkrepro.port.ali1977.case1 import Section
     from linkrepro.port.rahman1996.data import QP_BOUNDS, QP_ROWS, CsspInputs
     from linkrepro.port.ali1977.fourbar import Lengths
@@ -636,7 +660,18 @@ def _gsc_documented(frame):
     return [kept[~dead], kept[dead].drop(columns=gsc_forces.COMPONENTS, errors="ignore")]
 
 
-SCRUBS = {"gsc": _gsc_documented}
+def _positions_documented(run):
+    """rahman1991.position.positions documents NaN in q and closure where a position did not
+    converge or cannot assemble (its status says which)."""
+    import numpy as np
+    from linkrepro.port.rahman1991.position import DFP_THEN_NEWTON, NEWTON, PositionRun
+    if not isinstance(run, PositionRun):
+        return run
+    solved = np.isin(run.status, [NEWTON, DFP_THEN_NEWTON])
+    return [run.q[solved], run.closure[solved]]
+
+
+SCRUBS = {"gsc": _gsc_documented, "positions": _positions_documented}
 
 
 # --- what a returned result must satisfy ---------------------------------------------------

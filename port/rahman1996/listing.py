@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ...checks import angles_deg, finite_matrix, listing_condition, refuse_singular_position
+from ...checks import angles_deg, finite_matrix, listing_condition, real_array, refuse_singular_position
 from ...errors import ConvergenceError, SingularPositionError
 from ..slider_crank import _newton as kernel
 from .data import Constants
@@ -139,8 +139,13 @@ def listing_pass(crank_deg: np.ndarray, q0: np.ndarray, c: Constants, printed: b
     ``printed``: invert with the listing's INVERSE, else by LU with pivoting.
     """
     deg = angles_deg("crank_deg", crank_deg)
+    if not isinstance(c, Constants):
+        raise TypeError(f"c must be rahman1996.data.Constants, got {type(c).__name__}")
+    q0 = real_array("q0", q0)
+    if q0.shape != (5,):
+        raise ValueError(f"q0 must hold the five positions, got shape {q0.shape}")
     theta1 = deg * (c.pi / 180.0)
-    q, dot, ddot, _, status, j = kernel.listing_sweep(theta1, np.asarray(q0, dtype=float), c.a1, c.a2, c.a4,
+    q, dot, ddot, _, status, j = kernel.listing_sweep(theta1, q0, c.a1, c.a2, c.a4,
                                                       c.alpha4, c.s1, c.omega, c.newton_tol, printed)
     refuse_singular_position(deg, listing_condition(q[:, 0], q[:, 1], q[:, 2]))   # NaN where not computed
     if status == kernel.NOT_CONVERGED:

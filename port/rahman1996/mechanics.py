@@ -179,8 +179,10 @@ def closed_loop_loads(c, crank_deg):
     SingularPositionError at the first angle where the loop is ill-conditioned
     (``linkrepro.checks.refuse_singular_position``, register D150).
     """
-    from .data import GRAVITY
+    from .data import GRAVITY, Constants
     from .objective import UnitLoads as ObjectiveLoads
+    if not isinstance(c, Constants):
+        raise TypeError(f"c must be rahman1996.data.Constants, got {type(c).__name__}")
     deg = angles_deg("crank_deg", crank_deg)
     masses = np.asarray(c.masses)
     radii = tuple(tuple(np.sqrt(np.asarray(i) / m)) for i, m in ((c.inertia_crank, masses[0]),

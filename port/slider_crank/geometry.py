@@ -82,6 +82,8 @@ class LoopConstants:
 
     @classmethod
     def of(cls, inputs: CsspInputs, real4: bool) -> "LoopConstants":
+        if not isinstance(inputs, CsspInputs):
+            raise TypeError(f"inputs must be CsspInputs, got {type(inputs).__name__} {inputs!r}")
         s = lambda x: single(x, real4)                                   # noqa: E731
         pi = float(np.float32(4.0) * np.arctan(np.float32(1.0))) if real4 else math.pi
         degrad = pi / 180.0

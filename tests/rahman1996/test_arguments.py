@@ -137,3 +137,19 @@ def test_errors_stay_typed_where_the_inputs_are_good():
     """A geometry that cannot close still gives a linkage error, not an argument error."""
     with pytest.raises((LinkageError, QPError)):
         balance(CsspInputs(a2=2.5), CSSP_CORRECTED)
+
+
+def test_the_lower_level_functions_refuse_the_wrong_kind_of_argument():
+    """Found by the fuzz: Constants.of(Lengths(...)) and closed_loop_loads('x', ...) raised
+    AttributeError, listing_pass with a 3 x 3 q0 a numba TypingError."""
+    c = Constants.of(CsspInputs(), True)
+    with pytest.raises(TypeError):
+        Constants.of(np.ones(5), True)
+    with pytest.raises(TypeError):
+        closed_loop_loads("x", np.array([10.0]))
+    with pytest.raises(TypeError):
+        listing_pass(np.array([0.0, 10.0]), initial_estimate(c, True), "c")
+    with pytest.raises(ValueError):
+        listing_pass(np.array([0.0, 10.0]), np.ones((3, 3)), c)
+    with pytest.raises(TypeError):
+        listing_pass(np.array([0.0, 10.0]), np.ones(5, dtype=bool), c)
