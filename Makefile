@@ -19,9 +19,11 @@ bench: $(VENV)/.installed
 	$(BIN)/linkrepro bench --out out/bench
 
 fuzz: $(VENV)/.installed
-	$(BIN)/python -m linkrepro.harness.fuzz --calls 10000 --seed 0 --timeout 20 --out out/fuzz.json
-	HYPOTHESIS_PROFILE=thorough $(BIN)/python -m pytest -q tests/ali1977/test_differential.py \
-	  tests/rahman1996/test_differential.py tests/rahman1996/test_differential_qprog.py
+	$(BIN)/python -m linkrepro.harness.fuzz --calls 20000 --seed 0 --timeout 60 --out out/fuzz.json
+	HYPOTHESIS_PROFILE=thorough $(BIN)/python -m pytest -q -n auto tests/ali1977/test_differential.py \
+	  tests/ali1977/test_cognate_geometry.py tests/ali1977/test_conditioning.py \
+	  tests/rahman1996/test_differential.py tests/rahman1996/test_differential_qprog.py \
+	  tests/rahman1996/test_qprog_scaling.py tests/rahman1996/test_arguments.py
 
 setup: $(VENV)/.installed
 
