@@ -68,22 +68,30 @@ def expected_error(kappa, link_spread: float, real4: bool) -> np.ndarray:
 
 
 def check_precision(deg, kappa, link_spread: float, real4: bool, who: str, stacklevel: int = 3) -> None:
-    """Where the bound reaches 1 (no digit can be promised: the position is singular to
-    working precision), SingularPositionError at the first such input angle; where it passes
-    half the digits the results' storage holds (sqrt of its unit roundoff: 8 digits of a
-    double, 3.6 of a REAL*4), a PrecisionWarning at the first such angle."""
+    """Where the bound reaches 1 no digit can be promised: ValueError if the links' lengths
+    differ too much for the engine's storage at any position (the storage term alone reaches
+    1), else SingularPositionError at the first such input angle (a toggle to working
+    precision).  Where the bound passes half the digits the results' storage holds (sqrt of
+    its unit roundoff: 8 digits of a double, 3.6 of a REAL*4), a PrecisionWarning at the first
+    such angle."""
+    kappa = np.asarray(kappa, dtype=np.float64)
     bound = expected_error(kappa, link_spread, real4)
     if (bound >= 1.0).any():
         i = int(np.argmax(bound >= 1.0))
-        raise SingularPositionError(f"{who}: at a toggle to working precision (transmission angle within "
-                                    "rounding of 0 or 180 deg): no digit of the deflections can be trusted",
-                                    float(deg[i]), condition=float(kappa[i]))
+        if expected_error(0.0, link_spread, real4) < 1.0:
+            raise SingularPositionError(f"{who}: at a toggle to working precision (transmission angle within "
+                                        "rounding of 0 or 180 deg): no digit of the deflections can be trusted",
+                                        float(deg[i]), condition=float(kappa[i]))
+        raise ValueError(f"{who}: the links' lengths differ by a factor {link_spread:.3g}: no digit of the "
+                         f"deflections can be promised in this arithmetic (condition {kappa[i]:.3g} at input "
+                         f"angle {float(deg[i]):g} deg)")
     claim = math.sqrt(REAL4_UNIT if real4 else DOUBLE_UNIT)
     if (bound > claim).any():
         i = int(np.argmax(bound > claim))
-        warnings.warn(PrecisionWarning(f"{who}: near a toggle the deflections keep fewer than half the digits "
-                                       "they are stored with", float(deg[i]), condition=float(kappa[i]),
-                                       relative_error=float(bound[i])), stacklevel=stacklevel)
+        warnings.warn(PrecisionWarning(f"{who}: the deflections keep fewer than half the digits they are "
+                                       f"stored with (near a toggle, or links' lengths {link_spread:.3g} apart)",
+                                       float(deg[i]), condition=float(kappa[i]), relative_error=float(bound[i])),
+                      stacklevel=stacklevel)
 
 
 def closes_within_rounding(deg: float, pi: float, l1: float, l3: float, l4: float, l5: float) -> bool:

@@ -129,3 +129,16 @@ def test_the_published_example_is_quiet():
         out = ali1977.case1_source()
         source_case1(np.arange(0.0, 360.0, 20.0), quirks=CORRECTED)
     assert out["condition"].max() < 10.0
+
+
+def test_links_too_unequal_for_real4_are_refused_where_double_still_answers():
+    """Links from 1e-3 to 600 in (a factor 6e5): the listings' REAL*4 storage keeps no digit
+    (64 u_s spread > 1), a ValueError in legacy and the listing port alike; the corrected port
+    in double precision answers, with a PrecisionWarning."""
+    links = (1e-3, 1.0, 600.0, 600.0, 600.0)
+    with pytest.raises(ValueError, match="differ by a factor"):
+        ali1977.case1_source(*links)
+    with pytest.raises(ValueError, match="differ by a factor"):
+        source_case1(np.arange(0.0, 360.0, 20.0), Lengths(*links), alp=1.0, quirks=PRINTED)
+    with pytest.warns(PrecisionWarning):
+        source_case1(np.arange(0.0, 360.0, 20.0), Lengths(*links), alp=1.0, quirks=CORRECTED)
