@@ -37,6 +37,7 @@ from linkrepro.errors import LinkageError, QPError
 from linkrepro.port.rahman1996 import balance as port_cssp
 from linkrepro.port.rahman1996 import qprog as port_qprog
 from linkrepro.port.rahman1996.data import QP_BOUNDS, QP_EQUALITIES, QP_ROWS
+from tests.patience import CHILD_SECONDS
 
 #: DATA b as the listing's QPROG receives it (REAL*4)
 CSSP_BOUNDS = np.asarray(QP_BOUNDS, dtype=np.float32).astype(np.float64)
@@ -262,7 +263,7 @@ def test_solve_qp_solves_where_quadprog_failed_and_equals_legacy():
 # --------------------------------------------------------------- where the two cannot agree
 
 
-def in_child(code: str, timeout: float = 60.0) -> str:
+def in_child(code: str, timeout: float = CHILD_SECONDS) -> str:
     """Run ``code`` in a child interpreter; its stdout.  A hang or a crash fails the test."""
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=timeout)
     assert done.returncode == 0, done.stderr
@@ -274,7 +275,7 @@ def test_where_the_diag_rule_stalled_both_return_alike():
     TINY and DIAG + (TINY - PIVOT) == DIAG: statement 100 repeated forever.  Now DIAG takes the
     next number up, in the FORTRAN and the port; with -2.9 (rounding up) nothing changed."""
     code = "import numpy as np; from linkrepro.legacy import rahman1996; print(rahman1996.qprog(np.diag([-1.3, 5.3]), np.ones(2))['diag'])"
-    assert float(in_child(code, timeout=20.0)) > 1.3
+    assert float(in_child(code)) > 1.3
     for h11 in (-1.3, -2.9):
         assert_same(np.diag([h11, 5.3]), np.ones(2))
 

@@ -19,6 +19,7 @@ import pytest
 
 from linkrepro.errors import SingularPositionError
 from linkrepro.legacy.rahman1996 import inverse
+from tests.patience import CHILD_SECONDS
 
 #: symmetric, diagonally dominant base matrix of the driver cases (/tmp/cssp_sub_notes.md)
 S0 = np.array([[4.0, 1, 0, 0, 1], [1, 5, 2, 0, 0], [0, 2, 6, 1, 0], [0, 0, 1, 7, 2], [1, 0, 0, 2, 8]])
@@ -157,7 +158,7 @@ print("alive")
 
 def test_singular_matrix_does_not_stop_or_print_in_a_child_process():
     out = subprocess.run([sys.executable, "-c", SINGULAR_CHILD], capture_output=True, text=True,
-                         timeout=60)
+                         timeout=CHILD_SECONDS)
     assert out.returncode == 0, out.stderr
     assert out.stdout.split() == ["caught", "alive"]
     assert "SINGULAR" not in (out.stdout + out.stderr).upper()

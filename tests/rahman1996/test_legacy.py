@@ -10,6 +10,7 @@ from linkrepro.legacy import rahman1996
 from linkrepro.errors import ConvergenceError
 from linkrepro.harness.published_tables import PublishedTable
 from linkrepro.harness.scenes.rahman1996.tables import printed_run
+from tests.patience import CHILD_SECONDS
 
 SERIES = ["5_2", "5_3", "5_4", "5_5", "5_6", "5_7"]
 #: published cells registered as one-digit misprints (D058): (table, column, crank_deg)
@@ -110,7 +111,7 @@ def test_failures_never_kill_the_interpreter():
             "for call in (lambda: rahman1996.cssp(a2=2.5), lambda: rahman1996.inverse(np.zeros((5, 5)))):\n"
             "    try:\n        call()\n    except LinkageError as e:\n        print(type(e).__name__)\n"
             "print('ALIVE')\n")
-    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=CHILD_SECONDS)
     assert done.returncode == 0, done.stderr
     assert done.stdout.split() == ["ConvergenceError", "SingularPositionError", "ALIVE"], done.stdout
 

@@ -27,6 +27,7 @@ from scipy.optimize import minimize
 
 from linkrepro.legacy import rahman1996
 from linkrepro.legacy.rahman1996 import QPError, qprog
+from tests.patience import CHILD_SECONDS
 
 EPS = np.finfo(float).eps
 
@@ -272,10 +273,10 @@ def test_psd_h_with_a_zero_row_terminates_and_reaches_the_true_minimum():
     _, f_qp, _ = quadprog_solve(np.diag([1.0, 1e-10]), np.array([-1.0, 0.0]))
     try:
         out = subprocess.run([sys.executable, "-c", FREE_DIAGONAL_CHILD], capture_output=True,
-                             text=True, timeout=30)       # run() kills the child on timeout
+                             text=True, timeout=CHILD_SECONDS)       # run() kills the child on timeout
     except subprocess.TimeoutExpired:
         out = None
-    assert out is not None, "qprog(diag(1, 0), (-1, 0)) did not return within 30 s"
+    assert out is not None, f"qprog(diag(1, 0), (-1, 0)) did not return within {CHILD_SECONDS:g} s"
     assert out.returncode == 0, out.stderr
     assert float(out.stdout) == pytest.approx(f_qp, abs=1e-7)
 
@@ -299,7 +300,7 @@ def test_a_failing_qprog_does_not_stop_the_interpreter():
     code = ("import numpy as np\nfrom linkrepro.legacy.rahman1996 import qprog, QPError\n"
             "try:\n    qprog(np.eye(1), [0.0], [[1.0], [-1.0]], [1.0, 0.0])\n"
             "except QPError:\n    print('caught')\nprint('alive')\n")
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=CHILD_SECONDS)
     assert out.returncode == 0, out.stderr
     assert out.stdout.split() == ["caught", "alive"]
 
