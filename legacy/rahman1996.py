@@ -26,6 +26,7 @@ import numpy as np
 from ..checks import (finite_matrix, listing_condition, masses, qp_arguments, refuse_singular_position,
                       slider_crank)
 from ..errors import ConvergenceError, QPError, SingularPositionError
+from ..port.rahman1996.qprog import MISSES_MESSAGE
 from . import _rahman1996 as _f
 
 #: held around every call into the compiled Rahman (1996) FORTRAN (static storage, see above)
@@ -101,7 +102,9 @@ def qprog(h, g, a=None, b=None, neq: int = 0) -> dict:
 
     Minimizes g'x + x'Hx/2 subject to a[:neq] x = b[:neq] and a[neq:] x >= b[neq:].
     Returns ``sol``, ``diag`` (the multiple of the identity added to H, 0 when H is
-    positive definite), ``active`` (0-based constraint indices) and ``multipliers``.
+    positive definite), ``active`` (0-based constraint indices) and ``multipliers``; QPError
+    for inconsistent constraints, the iteration limit, a non-finite answer, or one that would
+    miss a row by more than the method's rounding (port.rahman1996.qprog's docstring).
     """
     h, g, a, b, neq = qp_arguments(h, g, a, b, neq, 60, 200)
     n = g.size
@@ -114,6 +117,8 @@ def qprog(h, g, a=None, b=None, neq: int = 0) -> dict:
         raise QPError("QPROG: the constraints are inconsistent")
     if status == 2:
         raise QPError("QPROG: iteration limit reached")
+    if status == 4:
+        raise QPError(MISSES_MESSAGE)
     if status == 3:
         raise ValueError("QPROG: bad arguments")
     if not (np.isfinite(diag) and np.all(np.isfinite(sol)) and np.all(np.isfinite(lam[:nact]))):

@@ -31,7 +31,8 @@ class ConvergenceError(LinkageError):
 
 class QPError(ArithmeticError):
     """A quadratic program has no solution: inconsistent constraints, the iteration limit,
-    or a Hessian that is not finite.  Raised alike by the legacy QPROG and the port's QP."""
+    a Hessian that is not finite, or an answer that would miss a constraint by more than the
+    solver's rounding.  Raised alike by the legacy QPROG and the port's QP."""
 
 
 class LinkreproWarning(UserWarning):

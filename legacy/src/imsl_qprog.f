@@ -13,7 +13,11 @@ C     RAISING IT PIVOT BY PIVOT IN THE CHOLESKY FACTORIZATION (D050).
 C     OUTPUT: SOL, NACT ACTIVE CONSTRAINTS IACT(1..NACT) WITH LAGRANGE
 C     MULTIPLIERS ALAMDA(1..NACT).  A STATUS IS LEFT IN COMMON /QPSTAT/:
 C     0 SOLVED, 1 CONSTRAINTS INCONSISTENT, 2 ITERATION LIMIT, 3 BAD
-C     ARGUMENTS.  ALL ARITHMETIC IS DOUBLE PRECISION (DQPROG); QPROG
+C     ARGUMENTS, 4 THE SOLUTION FOUND MISSES A CONSTRAINT BY MORE THAN
+C     THE METHOD'S ROUNDING (QPSOLV'S LAST GUARD, ISSUE 22).  A SOLVED
+C     SOL MEETS EVERY ROW TO EPS*(1E3 + 8 KAPPA) OF |A(I,.)||SOL|+|B(I)|,
+C     KAPPA = TRACE(H+DIAG*I)*TRACE((H+DIAG*I)^-1) >= ITS CONDITION
+C     NUMBER.  ALL ARITHMETIC IS DOUBLE PRECISION (DQPROG); QPROG
 C     IS THE REAL*4 ENTRY, AS IN IMSL.  DQPROG SCALES THE ROWS AND H BY
 C     POWERS OF TWO BEFORE SOLVING (QPSOLV), SO THAT THE TOLERANCES ARE
 C     RELATIVE TO THE PROBLEM'S OWN SCALE (ISSUE 22).
@@ -121,6 +125,13 @@ C
       SUBROUTINE QPSOLV (NVAR, NCON, NEQ, A, LDA, B, G, H, LDH, DIAG,
      *                   SOL, NACT, IACT, ALAMDA)
 C     THE GOLDFARB-IDNANI METHOD ON THE SCALED PROBLEM (SEE DQPROG).
+C     ISSUE 22 (A VIOLATED ROW DEPENDENT ON THE ACTIVE ONES WAS ADDED AS
+C     IF INDEPENDENT, AND INFEASIBLE PROBLEMS RETURNED AS SOLVED): Z = 0
+C     IS DECIDED AGAINST THE ROUNDING OF ZN (ZR), THE ROW TESTS ARE
+C     RELATIVE TO |A(I,.)||SOL| + |B(I)| (QPROW), A DEPENDENT EQUALITY
+C     THAT HOLDS IS HELD INSTEAD OF REFUSED, A FULL STEP PROJECTS SOL
+C     BACK ONTO THE ACTIVE ROWS WHERE ROUNDING LEFT THEM OFF (QPRFN),
+C     AND NO SOL IS RETURNED THAT MISSES A ROW BY MORE THAN GTOL.
       INTEGER NVAR, NCON, NEQ, LDA, LDH, NACT, IACT(*)
       DOUBLE PRECISION A(LDA,*), B(*), G(*), H(LDH,*), DIAG, SOL(*),
      *                 ALAMDA(*)
@@ -134,9 +145,11 @@ C     NUMERICALLY DEPENDENT ONES CAN ENTER BEFORE QPGAUS FINDS M SINGULAR.
      *                 GN(MAXV,MAXC), M(MAXC,MAXC), RHS(MAXC),
      *                 SGN(MAXC), ENORM(MAXC)
       DOUBLE PRECISION S, SMIN, T, T1, T2, UPLUS, ZN, PIVOT, SCALE, EPS,
-     *                 TOL, TINY, DNEW, QPHMAX
-      INTEGER I, J, K, P, KDROP, ITER, MAXIT, ISTAT, JJ
-      LOGICAL ACTIVE(MAXC), DONE
+     *                 TOL, TINY, DNEW, QPHMAX, ZR, SIZE, GTOL, QPKAPP
+      INTEGER I, J, K, P, KDROP, ITER, MAXIT, ISTAT
+C     HELD(I): EQUALITY I HOLDS AND DEPENDS ON THE ACTIVE ROWS; NOT
+C     ADDED, AND NOT PICKED AGAIN UNTIL SOL MOVES
+      LOGICAL ACTIVE(MAXC), HELD(MAXC), DONE
       COMMON /QPSTAT/ ISTAT
       EPS = EPSILON(1.0D0)
       ISTAT = 0
@@ -177,6 +190,11 @@ C           (ELSE STATEMENT 100 WOULD REPEAT THE SAME FACTORIZATION)
             L(I,J) = S/L(J,J)
   125    CONTINUE
   130 CONTINUE
+C     GTOL: HOW FAR A SOLVED SOL MAY MISS A ROW, RELATIVE TO ITS SIZE:
+C     1E3 EPS, AND 8 EPS KAPPA FOR THE ROUNDING OF THE METHOD WHERE
+C     H + DIAG*I IS ILL-CONDITIONED (ISSUE 22)
+      GTOL = EPS*(1.0D3 + 8.0D0*QPKAPP(NVAR, H, LDH, DIAG, L, MAXV, W,
+     *                                 Z))
 C     ---- UNCONSTRAINED MINIMUM: SOL = -(H+DIAG I)^-1 G ----
       DO 140 I = 1, NVAR
          RHS(I) = -G(I)
@@ -184,6 +202,7 @@ C     ---- UNCONSTRAINED MINIMUM: SOL = -(H+DIAG I)^-1 G ----
       CALL QPCHSL (NVAR, L, MAXV, RHS, SOL)
       DO 150 I = 1, NCON
          ACTIVE(I) = .FALSE.
+         HELD(I) = .FALSE.
          SGN(I) = 1.0D0
          ENORM(I) = 0.0D0
          DO 145 J = 1, NVAR
@@ -203,11 +222,8 @@ C     ---- OUTER LOOP: PICK A VIOLATED CONSTRAINT P ----
       P = 0
       SMIN = 0.0D0
       DO 210 I = 1, NCON
-         IF (ACTIVE(I)) GO TO 210
-         S = -B(I)
-         DO 205 J = 1, NVAR
-            S = S + A(I,J)*SOL(J)
-  205    CONTINUE
+         IF (ACTIVE(I) .OR. HELD(I)) GO TO 210
+         CALL QPROW (NVAR, A, LDA, B, I, SOL, S, SIZE)
          IF (I.LE.NEQ) THEN
 C           AN EQUALITY ENTERS FIRST, TURNED SO THAT IT IS VIOLATED
             SGN(I) = 1.0D0
@@ -216,7 +232,9 @@ C           AN EQUALITY ENTERS FIRST, TURNED SO THAT IT IS VIOLATED
             SMIN = SGN(I)*S
             GO TO 220
          END IF
-         TOL = 1.0D3*EPS*ENORM(I)*MAX(1.0D0, ABS(B(I)))
+C        VIOLATED BEYOND ITS ROUNDING (ISSUE 22: WAS 1E3 EPS |A(I,.)|
+C        MAX(1, |B(I)|), ABSOLUTE IN SOL'S SCALE)
+         TOL = 1.0D3*EPS*SIZE
          IF (S.LT.-TOL .AND. S/ENORM(I).LT.SMIN) THEN
             P = I
             SMIN = S/ENORM(I)
@@ -237,13 +255,8 @@ C     W = H^-1 N+, GN(.,K) = H^-1 N_K FOR THE ACTIVE NORMALS
          RHS(J) = SGN(P)*A(P,J)
   305 CONTINUE
       CALL QPCHSL (NVAR, L, MAXV, RHS, W)
-      DO 320 K = 1, NACT
-         JJ = IACT(K)
-         DO 310 J = 1, NVAR
-            RHS(J) = SGN(JJ)*A(JJ,J)
-  310    CONTINUE
-         CALL QPCHSL (NVAR, L, MAXV, RHS, GN(1,K))
-  320 CONTINUE
+      CALL QPNMAT (NVAR, NACT, IACT, SGN, A, LDA, L, MAXV, GN, M, MAXC,
+     *             RHS)
 C     R = (N'H^-1N)^-1 N'W ; Z = W - GN R
       IF (NACT.GT.0) THEN
          DO 340 I = 1, NACT
@@ -251,12 +264,6 @@ C     R = (N'H^-1N)^-1 N'W ; Z = W - GN R
             DO 330 J = 1, NVAR
                RHS(I) = RHS(I) + SGN(IACT(I))*A(IACT(I),J)*W(J)
   330       CONTINUE
-            DO 336 K = 1, NACT
-               M(I,K) = 0.0D0
-               DO 335 J = 1, NVAR
-                  M(I,K) = M(I,K) + SGN(IACT(I))*A(IACT(I),J)*GN(J,K)
-  335          CONTINUE
-  336       CONTINUE
   340    CONTINUE
          CALL QPGAUS (NACT, M, MAXC, RHS, R, ISTAT)
          IF (ISTAT.NE.0) THEN
@@ -264,20 +271,26 @@ C     R = (N'H^-1N)^-1 N'W ; Z = W - GN R
             RETURN
          END IF
       END IF
+C     ZR: THE SIZE OF THE TERMS OF ZN, THE SCALE OF ITS ROUNDING
       ZN = 0.0D0
+      ZR = 0.0D0
       DO 360 J = 1, NVAR
          Z(J) = W(J)
+         SIZE = ABS(W(J))
          DO 350 K = 1, NACT
             Z(J) = Z(J) - GN(J,K)*R(K)
+            SIZE = SIZE + ABS(GN(J,K)*R(K))
   350    CONTINUE
          ZN = ZN + Z(J)*SGN(P)*A(P,J)
+         ZR = ZR + SIZE*ABS(A(P,J))
   360 CONTINUE
 C     PARTIAL STEP T1 (A DUAL VARIABLE REACHES ZERO), FULL STEP T2
       T1 = -1.0D0
       KDROP = 0
       DO 370 K = 1, NACT
          IF (IACT(K).LE.NEQ) GO TO 370
-         IF (R(K).GT.EPS*MAX(1.0D0,ABS(U(K)))) THEN
+C        R IS FREE OF UNITS (ISSUE 22: WAS EPS*MAX(1,|U(K)|), U IN G'S)
+         IF (R(K).GT.EPS) THEN
             T = U(K)/R(K)
             IF (KDROP.EQ.0 .OR. T.LT.T1) THEN
                T1 = T
@@ -285,13 +298,19 @@ C     PARTIAL STEP T1 (A DUAL VARIABLE REACHES ZERO), FULL STEP T2
             END IF
          END IF
   370 CONTINUE
-      S = -B(P)
-      DO 375 J = 1, NVAR
-         S = S + A(P,J)*SOL(J)
-  375 CONTINUE
+      CALL QPROW (NVAR, A, LDA, B, P, SOL, S, SIZE)
       S = SGN(P)*S
+C     Z = 0 (N+ DEPENDS ON THE ACTIVE NORMALS) UNLESS ZN STANDS ABOVE ITS
+C     ROUNDING (ISSUE 22: THE TEST WAS ZN > EPS |N+|**2, WHICH ROUNDING
+C     PASSED, AND A FULL STEP OF S/ZN ~ 1E14 ALONG NOISE ADDED P)
       T2 = -1.0D0
-      IF (ZN.GT.EPS*ENORM(P)**2) T2 = -S/ZN
+      IF (ZN.GT.1.0D3*EPS*ZR) T2 = -S/ZN
+      IF (T2.LT.0.0D0 .AND. P.LE.NEQ .AND. UPLUS.EQ.0.0D0 .AND.
+     *    -S.LE.1.0D3*EPS*SIZE) THEN
+C        A DEPENDENT EQUALITY THAT HOLDS (A REPEATED ROW, 0 X = 0)
+         HELD(P) = .TRUE.
+         GO TO 200
+      END IF
       IF (T2.LT.0.0D0 .AND. KDROP.EQ.0) THEN
 C        NO STEP CAN SATISFY CONSTRAINT P: THE CONSTRAINTS ARE INCONSISTENT
          ISTAT = 1
@@ -309,6 +328,9 @@ C        DUAL STEP ONLY, THEN DROP THE BLOCKING CONSTRAINT
          DO 380 J = 1, NVAR
             SOL(J) = SOL(J) + T*Z(J)
   380    CONTINUE
+         DO 382 I = 1, NCON
+            HELD(I) = .FALSE.
+  382    CONTINUE
       END IF
       DO 385 K = 1, NACT
          U(K) = U(K) - T*R(K)
@@ -321,6 +343,8 @@ C        FULL STEP: P JOINS THE ACTIVE SET
          IACT(NACT) = P
          U(NACT) = UPLUS
          ACTIVE(P) = .TRUE.
+         CALL QPRFN (NVAR, NACT, IACT, SGN, A, LDA, B, L, MAXV, GTOL,
+     *               SOL, U, GN, M, MAXC, RHS, R, W)
          GO TO 200
       END IF
 C     PARTIAL STEP: DROP THE ACTIVE CONSTRAINT KDROP, STAY WITH P
@@ -331,11 +355,119 @@ C     PARTIAL STEP: DROP THE ACTIVE CONSTRAINT KDROP, STAY WITH P
   390 CONTINUE
       NACT = NACT - 1
       GO TO 300
-C     ---- SOLVED: MULTIPLIERS IN THE ORIGINAL CONSTRAINTS' SENSE ----
+C     ---- SOLVED: THE LAST GUARD (ISSUE 22), THEN THE MULTIPLIERS IN
+C     THE ORIGINAL CONSTRAINTS' SENSE ----
   900 CONTINUE
+      DO 905 I = 1, NCON
+         CALL QPROW (NVAR, A, LDA, B, I, SOL, S, SIZE)
+         IF (I.LE.NEQ) S = -ABS(S)
+         IF (S.LT.-GTOL*SIZE) THEN
+            ISTAT = 4
+            RETURN
+         END IF
+  905 CONTINUE
       DO 910 K = 1, NACT
          ALAMDA(K) = SGN(IACT(K))*U(K)
   910 CONTINUE
+      RETURN
+      END
+C
+      SUBROUTINE QPROW (NVAR, A, LDA, B, I, SOL, S, SIZE)
+C     S = A(I,.)SOL - B(I), SUMMED FROM -B(I) IN THE ORDER OF THE
+C     VARIABLES, AND SIZE = |B(I)| + SUM |A(I,J)SOL(J)|, THE SCALE OF ITS
+C     ROUNDING (ISSUE 22).
+      INTEGER NVAR, LDA, I, J
+      DOUBLE PRECISION A(LDA,*), B(*), SOL(*), S, SIZE
+      S = -B(I)
+      SIZE = ABS(B(I))
+      DO 10 J = 1, NVAR
+         S = S + A(I,J)*SOL(J)
+         SIZE = SIZE + ABS(A(I,J)*SOL(J))
+   10 CONTINUE
+      RETURN
+      END
+C
+      SUBROUTINE QPNMAT (NVAR, NACT, IACT, SGN, A, LDA, L, LDL, GN, M,
+     *                   LDM, E)
+C     FOR THE ACTIVE NORMALS N_K = SGN*A(IACT(K),.): GN(.,K) = H^-1 N_K
+C     (H = L L') AND M = N'H^-1N.  E IS A WORK ARRAY OF LENGTH NVAR.
+      INTEGER NVAR, NACT, IACT(*), LDA, LDL, LDM, I, J, K, JJ
+      DOUBLE PRECISION SGN(*), A(LDA,*), L(LDL,*), GN(LDL,*), M(LDM,*),
+     *                 E(*)
+      DO 20 K = 1, NACT
+         JJ = IACT(K)
+         DO 10 J = 1, NVAR
+            E(J) = SGN(JJ)*A(JJ,J)
+   10    CONTINUE
+         CALL QPCHSL (NVAR, L, LDL, E, GN(1,K))
+   20 CONTINUE
+      DO 50 I = 1, NACT
+         DO 40 K = 1, NACT
+            M(I,K) = 0.0D0
+            DO 30 J = 1, NVAR
+               M(I,K) = M(I,K) + SGN(IACT(I))*A(IACT(I),J)*GN(J,K)
+   30       CONTINUE
+   40    CONTINUE
+   50 CONTINUE
+      RETURN
+      END
+C
+      SUBROUTINE QPRFN (NVAR, NACT, IACT, SGN, A, LDA, B, L, LDL, GTOL,
+     *                  SOL, U, GN, M, LDM, RHS, R, W)
+C     WHERE AN ACTIVE ROW MISSES ITS BOUND BY MORE THAN GTOL OF ITS SIZE
+C     (ROUNDING IN THE STEPS, E.G. FROM AN UNCONSTRAINED MINIMUM FAR OUT),
+C     AT MOST TWO SWEEPS OF  SOL = SOL + GN Y,  U = U + Y  WITH
+C     (N'H^-1N) Y = -(N'SOL - B): BACK ON THE ACTIVE ROWS, AND H SOL + G
+C     = N U STILL HOLDS (ISSUE 22).  GN, M, RHS, R AND W: QPSOLV'S WORK.
+      INTEGER NVAR, NACT, IACT(*), LDA, LDL, LDM, J, K, SWEEP, INFO
+      DOUBLE PRECISION SGN(*), A(LDA,*), B(*), L(LDL,*), GTOL, SOL(*),
+     *                 U(*), GN(LDL,*), M(LDM,*), RHS(*), R(*), W(*),
+     *                 S, SIZE
+      LOGICAL OFF
+      DO 40 SWEEP = 1, 2
+         OFF = .FALSE.
+         DO 10 K = 1, NACT
+            CALL QPROW (NVAR, A, LDA, B, IACT(K), SOL, S, SIZE)
+            RHS(K) = -(SGN(IACT(K))*S)
+            IF (ABS(S).GT.GTOL*SIZE) OFF = .TRUE.
+   10    CONTINUE
+         IF (.NOT.OFF) RETURN
+         CALL QPNMAT (NVAR, NACT, IACT, SGN, A, LDA, L, LDL, GN, M, LDM,
+     *                W)
+         CALL QPGAUS (NACT, M, LDM, RHS, R, INFO)
+         IF (INFO.NE.0) RETURN
+         DO 30 J = 1, NVAR
+            S = SOL(J)
+            DO 20 K = 1, NACT
+               S = S + GN(J,K)*R(K)
+   20       CONTINUE
+            SOL(J) = S
+   30    CONTINUE
+         DO 35 K = 1, NACT
+            U(K) = U(K) + R(K)
+   35    CONTINUE
+   40 CONTINUE
+      RETURN
+      END
+C
+      DOUBLE PRECISION FUNCTION QPKAPP (N, H, LDH, DIAG, L, LDL, E, Y)
+C     TRACE(H + DIAG*I) * TRACE((H + DIAG*I)^-1) FROM THE CHOLESKY
+C     FACTOR L: AT LEAST THE CONDITION NUMBER OF H + DIAG*I, AT MOST N**2
+C     TIMES IT (ISSUE 22).  E AND Y ARE WORK ARRAYS OF LENGTH N.
+      INTEGER N, LDH, LDL, I, J
+      DOUBLE PRECISION H(LDH,*), DIAG, L(LDL,*), E(*), Y(*), TH, TI
+      TH = 0.0D0
+      TI = 0.0D0
+      DO 20 J = 1, N
+         TH = TH + (H(J,J) + DIAG)
+         DO 10 I = 1, N
+            E(I) = 0.0D0
+   10    CONTINUE
+         E(J) = 1.0D0
+         CALL QPCHSL (N, L, LDL, E, Y)
+         TI = TI + Y(J)
+   20 CONTINUE
+      QPKAPP = TH*TI
       RETURN
       END
 C

@@ -29,6 +29,20 @@ power of four to a largest |H_ij| in [1, 4), the Goldfarb-Idnani method (QPSOLV,
 with rows, H and g scaled by any factors get the same answer up to rounding, and by powers
 of two (four for H) the same bits.
 
+Infeasible problems were returned as solved (issue 22, found by the fuzz): where a violated
+row's normal depends on the active ones, z = 0 up to rounding, but the test ZN > eps |n+|^2
+was absolute and rounding passed it, so the method stepped S/ZN ~ 1e14 along noise and added
+the row (more active rows than variables), leaving others violated.  Mended in the FORTRAN
+and here alike: z = 0 unless ZN > 1e3 eps ZR, ZR the size of ZN's terms; the row tests are
+relative to |a_i| |x| + |b_i| (``_row``; a bound at x ~ 1e-20 was ignored) and the drop test
+to r alone (u is in g's units: at x ~ 1e150 nothing could be dropped); an equality that holds
+and depends on the active rows (a repeated row, 0 x = 0) is held, not refused; after a full
+step, where rounding left an active row off by more than GTOL, sol is projected back
+(``_refine``); and no sol is returned that misses a row by more than GTOL = eps (1e3 +
+8 kappa) of its size, kappa = tr(H + DIAG I) tr((H + DIAG I)^-1) >= its condition number
+(``_kappa``): the method's own rounding, which reaches 4e-9 on the CSSP's example QP, whose
+bits are unchanged (QPError with ``MISSES_MESSAGE`` otherwise, status 4).
+
 Units are the caller's; in the CSSP balancing problem x holds the nine point masses
 (lb*s^2/in) and H is twice the objective's quadratic form summed over the cycle.
 """
@@ -44,8 +58,11 @@ from ...errors import QPError
 
 #: DQPROG's PARAMETERs: at most 60 variables and 200 constraints
 MAXV, MAXC = 60, 200
-#: status codes, COMMON /QPSTAT/
-SOLVED, INCONSISTENT, ITERATION_LIMIT, BAD_ARGUMENTS = 0, 1, 2, 3
+#: status codes, COMMON /QPSTAT/ (MISSES: QPSOLV's last guard, issue 22)
+SOLVED, INCONSISTENT, ITERATION_LIMIT, BAD_ARGUMENTS, MISSES = 0, 1, 2, 3, 4
+#: QPError's message for status 4
+MISSES_MESSAGE = ("QPROG: the solution found misses a constraint by more than the method's rounding "
+                  "(the constraints are inconsistent within rounding, or the problem too ill-conditioned)")
 #: EPSILON(1.0D0)
 EPS = float(np.finfo(np.float64).eps)
 
@@ -156,6 +173,81 @@ def _gaus(n, m, rhs, x):
 
 
 @njit(cache=True)
+def _row(a, b, i, sol):
+    """QPROW: (S, SIZE), S = a_i sol - b_i summed from -b_i in the variables' order and
+    SIZE = |b_i| + sum |a_ij sol_j|, the scale of its rounding."""
+    s = -b[i]
+    size = abs(b[i])
+    for j in range(sol.shape[0]):                         # DO 10
+        s = s + a[i, j] * sol[j]
+        size = size + abs(a[i, j] * sol[j])
+    return s, size
+
+
+@njit(cache=True)
+def _nmat(low, a, sgn, iact, nact, gn, m, e):
+    """QPNMAT: for the active normals n_k = sgn a[iact[k]], gn[k] = H^-1 n_k (H = L L') and
+    M = N'H^-1N; ``e`` is work space."""
+    nvar = low.shape[0]
+    for k in range(nact):                                 # DO 20
+        jj = iact[k]
+        for j in range(nvar):                             # DO 10
+            e[j] = sgn[jj] * a[jj, j]
+        _chsl(low, e, gn[k])
+    for i in range(nact):                                 # DO 50
+        ii = iact[i]
+        for k in range(nact):                             # DO 40
+            s = 0.0
+            for j in range(nvar):                         # DO 30
+                s = s + sgn[ii] * a[ii, j] * gn[k, j]
+            m[i, k] = s
+
+
+@njit(cache=True)
+def _refine(low, a, b, sgn, iact, nact, gtol, sol, u, gn, m, rhs, r, w):
+    """QPRFN: where an active row misses its bound by more than gtol of its size (rounding
+    in the steps), at most two sweeps of sol += GN y, u += y with (N'H^-1N) y = -(N'sol - b):
+    back on the active rows, H sol + g = N u still holding."""
+    nvar = sol.shape[0]
+    for _ in range(2):                                    # DO 40 SWEEP
+        off = False
+        for k in range(nact):                             # DO 10
+            s, size = _row(a, b, iact[k], sol)
+            rhs[k] = -(sgn[iact[k]] * s)
+            if abs(s) > gtol * size:
+                off = True
+        if not off:
+            return
+        _nmat(low, a, sgn, iact, nact, gn, m, w)
+        if _gaus(nact, m, rhs, r) != 0:
+            return
+        for j in range(nvar):                             # DO 30
+            s = sol[j]
+            for k in range(nact):                         # DO 20
+                s = s + gn[k, j] * r[k]
+            sol[j] = s
+        for k in range(nact):                             # DO 35
+            u[k] = u[k] + r[k]
+
+
+@njit(cache=True)
+def _kappa(h, diag, low, e, y):
+    """QPKAPP: tr(H + DIAG I) tr((H + DIAG I)^-1), at least the condition number of
+    H + DIAG I and at most n^2 times it; ``e`` and ``y`` are work space."""
+    n = low.shape[0]
+    th = 0.0
+    ti = 0.0
+    for j in range(n):                                    # DO 20
+        th = th + (h[j, j] + diag)
+        for i in range(n):                                # DO 10
+            e[i] = 0.0
+        e[j] = 1.0
+        _chsl(low, e, y)
+        ti = ti + y[j]
+    return th * ti
+
+
+@njit(cache=True)
 def _dqprog(h, g, a, b, neq):
     """DQPROG on validated arguments: (status, DIAG, SOL, NACT, IACT, ALAMDA).
 
@@ -201,7 +293,8 @@ def _solve(h, g, a, b, neq):
 
     Indices are 0-based (constraint i is the FORTRAN's I = i+1; P = 0 is p = -1).
     ``gn[k]`` holds the column GN(.,K).  Work arrays are sized by NCON (see the module
-    docstring), the FORTRAN's by MAXV.
+    docstring), the FORTRAN's by MAXV.  ``held[i]``: equality i holds and depends on the
+    active rows; not added, and not picked again until sol moves (issue 22).
     """
     nvar, ncon = g.shape[0], b.shape[0]
     low = np.zeros((nvar, nvar))
@@ -210,12 +303,18 @@ def _solve(h, g, a, b, neq):
     alamda = np.zeros(ncon)
     nact = 0
     diag = _cholesky_shift(h, low)
+    w = np.empty(nvar)
+    z = np.empty(nvar)
+    # how far a solved sol may miss a row, relative to its size: 1e3 eps, and 8 eps kappa
+    # for the rounding of the method where H + DIAG I is ill-conditioned (issue 22)
+    gtol = EPS * (1.0e3 + 8.0 * _kappa(h, diag, low, w, z))
     # ---- unconstrained minimum: SOL = -(H+DIAG I)^-1 G (140)
     rhs = np.empty(max(nvar, ncon))
     for i in range(nvar):                                 # DO 140
         rhs[i] = -g[i]
     _chsl(low, rhs, sol)
     active = np.zeros(ncon, dtype=np.bool_)
+    held = np.zeros(ncon, dtype=np.bool_)
     sgn = np.empty(ncon)
     enorm = np.empty(ncon)
     for i in range(ncon):                                 # DO 150
@@ -225,8 +324,6 @@ def _solve(h, g, a, b, neq):
         for j in range(nvar):                             # DO 145: + A(I,J)**2
             s = s + a[i, j] * a[i, j]
         enorm[i] = _max(math.sqrt(s), 1.0)
-    w = np.empty(nvar)
-    z = np.empty(nvar)
     gn = np.empty((ncon, nvar))
     m = np.empty((ncon, ncon))
     r = np.empty(ncon)
@@ -241,11 +338,9 @@ def _solve(h, g, a, b, neq):
         p = -1
         smin = 0.0
         for i in range(ncon):                             # DO 210
-            if active[i]:
+            if active[i] or held[i]:
                 continue
-            s = -b[i]
-            for j in range(nvar):                         # DO 205
-                s = s + a[i, j] * sol[j]
+            s, size = _row(a, b, i, sol)
             if i < neq:
                 # an equality enters first, turned so that it is violated (GO TO 220)
                 sgn[i] = 1.0
@@ -254,7 +349,7 @@ def _solve(h, g, a, b, neq):
                 p = i
                 smin = sgn[i] * s
                 break
-            tol = 1.0e3 * EPS * enorm[i] * _max(abs(b[i]), 1.0)
+            tol = 1.0e3 * EPS * size                      # violated beyond its rounding
             if s < -tol and s / enorm[i] < smin:
                 p = i
                 smin = s / enorm[i]
@@ -270,11 +365,7 @@ def _solve(h, g, a, b, neq):
             for j in range(nvar):                         # DO 305
                 rhs[j] = sgn[p] * a[p, j]
             _chsl(low, rhs, w)
-            for k in range(nact):                         # DO 320
-                jj = iact[k]
-                for j in range(nvar):                     # DO 310
-                    rhs[j] = sgn[jj] * a[jj, j]
-                _chsl(low, rhs, gn[k])
+            _nmat(low, a, sgn, iact, nact, gn, m, rhs)
             # R = (N'H^-1N)^-1 N'W ; Z = W - GN R
             if nact > 0:
                 for i in range(nact):                     # DO 340
@@ -283,38 +374,39 @@ def _solve(h, g, a, b, neq):
                     for j in range(nvar):                 # DO 330
                         s = s + sgn[ii] * a[ii, j] * w[j]
                     rhs[i] = s
-                    for k in range(nact):                 # DO 336
-                        s = 0.0
-                        for j in range(nvar):             # DO 335
-                            s = s + sgn[ii] * a[ii, j] * gn[k, j]
-                        m[i, k] = s
                 if _gaus(nact, m, rhs, r) != 0:
                     return INCONSISTENT, diag, sol, nact, iact, alamda
             zn = 0.0
+            zr = 0.0                                      # the scale of ZN's rounding
             for j in range(nvar):                         # DO 360
                 s = w[j]
+                size = abs(w[j])
                 for k in range(nact):                     # DO 350
                     s = s - gn[k, j] * r[k]
+                    size = size + abs(gn[k, j] * r[k])
                 z[j] = s
                 zn = zn + z[j] * sgn[p] * a[p, j]
+                zr = zr + size * abs(a[p, j])
             # partial step T1 (a dual variable reaches zero), full step T2
             t1 = -1.0
             kdrop = -1
             for k in range(nact):                         # DO 370
                 if iact[k] < neq:
                     continue
-                if r[k] > EPS * _max(abs(u[k]), 1.0):
+                if r[k] > EPS:                            # r is free of units
                     t = u[k] / r[k]
                     if kdrop < 0 or t < t1:
                         t1 = t
                         kdrop = k
-            s = -b[p]
-            for j in range(nvar):                         # DO 375
-                s = s + a[p, j] * sol[j]
+            s, size = _row(a, b, p, sol)
             s = sgn[p] * s
+            # z = 0 (n+ depends on the active normals) unless ZN stands above its rounding
             t2 = -1.0
-            if zn > EPS * (enorm[p] * enorm[p]):
+            if zn > 1.0e3 * EPS * zr:
                 t2 = -(s / zn)
+            if t2 < 0.0 and p < neq and uplus == 0.0 and -s <= 1.0e3 * EPS * size:
+                held[p] = True                            # a dependent equality that holds
+                break                                     # GO TO 200
             if t2 < 0.0 and kdrop < 0:
                 # no step can satisfy constraint P: the constraints are inconsistent
                 return INCONSISTENT, diag, sol, nact, iact, alamda
@@ -327,6 +419,8 @@ def _solve(h, g, a, b, neq):
             if t2 >= 0.0:
                 for j in range(nvar):                     # DO 380
                     sol[j] = sol[j] + t * z[j]
+                for i in range(ncon):                     # DO 382
+                    held[i] = False
             for k in range(nact):                         # DO 385
                 u[k] = u[k] - t * r[k]
             uplus = uplus + t
@@ -336,6 +430,7 @@ def _solve(h, g, a, b, neq):
                 u[nact] = uplus
                 nact += 1
                 active[p] = True
+                _refine(low, a, b, sgn, iact, nact, gtol, sol, u, gn, m, rhs, r, w)
                 break                                     # GO TO 200
             # partial step: drop the active constraint KDROP, stay with P
             active[iact[kdrop]] = False
@@ -343,7 +438,13 @@ def _solve(h, g, a, b, neq):
                 iact[k] = iact[k + 1]
                 u[k] = u[k + 1]
             nact -= 1                                     # GO TO 300
-    # ---- solved: multipliers in the original constraints' sense (900)
+    # ---- solved: the last guard (905), then the multipliers in the constraints' sense (910)
+    for i in range(ncon):
+        s, size = _row(a, b, i, sol)
+        if i < neq:
+            s = -abs(s)
+        if s < -gtol * size:
+            return MISSES, diag, sol, nact, iact, alamda
     for k in range(nact):                                 # DO 910
         alamda[k] = sgn[iact[k]] * u[k]
     return SOLVED, diag, sol, nact, iact, alamda
@@ -366,14 +467,20 @@ def qprog(h, g, a=None, b=None, neq: int = 0) -> dict:
     Minimizes g'x + x'Hx/2 subject to a[:neq] x = b[:neq] and a[neq:] x >= b[neq:].
     Returns ``sol``, ``diag`` (the multiple of the identity added to H, 0 when H is
     positive definite), ``active`` (0-based constraint indices) and ``multipliers``,
-    as ``linkrepro.legacy.rahman1996.qprog``.  Raises QPError when the constraints are
-    inconsistent, at the iteration limit or where the solution is not finite (overflow);
+    as ``linkrepro.legacy.rahman1996.qprog``.  Every row holds at ``sol`` to eps (1e3 +
+    8 kappa) of |a_i| |sol| + |b_i| (kappa >= cond(H + DIAG I), see the module docstring); an
+    equality that holds and depends on the others (a repeated row, 0 x = 0) is not in
+    ``active``.  Raises QPError when the constraints are inconsistent, where no solution
+    meets them to that tolerance, at the iteration limit or where the solution is not
+    finite (overflow);
     ValueError/TypeError for bad arguments (shapes, sizes, non-finite h, g, a or b).
     """
     h, g, a, b, neq = qp_arguments(h, g, a, b, neq, MAXV, MAXC)
     status, diag, sol, nact, iact, lam = _dqprog(np.ascontiguousarray(h), g, np.ascontiguousarray(a), b, neq)
     if status == INCONSISTENT:
         raise QPError("QPROG: the constraints are inconsistent")
+    if status == MISSES:
+        raise QPError(MISSES_MESSAGE)
     if status == ITERATION_LIMIT:
         raise QPError("QPROG: iteration limit reached")
     if not (np.isfinite(diag) and np.all(np.isfinite(sol)) and np.all(np.isfinite(lam[:nact]))):
