@@ -40,8 +40,9 @@ and depends on the active rows (a repeated row, 0 x = 0) is held, not refused; a
 step, where rounding left an active row off by more than GTOL, sol is projected back
 (``_refine``); and no sol is returned that misses a row by more than GTOL = eps (1e3 +
 8 kappa) of its size, kappa = tr(H + DIAG I) tr((H + DIAG I)^-1) >= its condition number
-(``_kappa``): the method's own rounding, which reaches 4e-9 on the CSSP's example QP, whose
-bits are unchanged (QPError with ``MISSES_MESSAGE`` otherwise, status 4).
+(``_kappa``), the method's own rounding: it is not backward stable, its answers miss rows by
+up to ~30 eps cond(H + DIAG I), 4.5e-9 on the corrected CSSP example's QP, whose bits are
+unchanged.  Otherwise QPError (``MISSES_MESSAGE``, status 4).
 
 Units are the caller's; in the CSSP balancing problem x holds the nine point masses
 (lb*s^2/in) and H is twice the objective's quadratic form summed over the cycle.
