@@ -706,8 +706,10 @@ def arguments_of(text: str, ns: dict) -> tuple[list, dict]:
 
 
 def _qp_feasible(arguments, result) -> str | None:
-    """qprog's ``sol`` satisfies a[:neq] x = b[:neq] and a[neq:] x >= b[neq:] to 1e-8 of the
-    rows' own magnitudes (|a| |x| + |b|)."""
+    """qprog's ``sol`` satisfies a[:neq] x = b[:neq] and a[neq:] x >= b[neq:] as QPROG promises
+    (register D050): each row missed by at most eps (1e3 + 8 kappa) of its own size
+    |a_i| |x| + |b_i|, kappa = tr(H~) tr(H~^-1) with H~ = H + diag I (H as QPROG reads it: its
+    lower triangle); twice that is a finding."""
     import numpy as np
     args, kwargs = arguments
     names = ("h", "g", "a", "b", "neq")
@@ -716,12 +718,21 @@ def _qp_feasible(arguments, result) -> str | None:
         return None
     a, b = np.atleast_2d(np.asarray(given["a"], dtype=float)), np.atleast_1d(np.asarray(given["b"], dtype=float))
     neq, x = int(given.get("neq", 0)), np.asarray(result["sol"], dtype=float)
+    lower = np.tril(np.atleast_2d(np.asarray(given["h"], dtype=float)))
+    shifted = lower + np.tril(lower, -1).T + result["diag"] * np.eye(len(x))
+    with np.errstate(all="ignore"):
+        try:
+            kappa = float(np.trace(shifted) * np.trace(np.linalg.inv(shifted)))
+        except np.linalg.LinAlgError:
+            kappa = np.inf
+    promise = np.finfo(float).eps * (1e3 + 8.0 * abs(kappa))
     slack = a @ x - b
     size = np.abs(a) @ np.abs(x) + np.abs(b)
     worst = np.where(np.arange(len(b)) < neq, np.abs(slack), -slack) / np.where(size > 0, size, 1.0)
-    if worst.max(initial=0.0) > 1e-8:
+    if worst.max(initial=0.0) > 2.0 * promise:
         k = int(np.argmax(worst))
-        return f"constraint {k} ({'equality' if k < neq else 'inequality'}) violated by {worst[k]:.3g} of its size"
+        return (f"constraint {k} ({'equality' if k < neq else 'inequality'}) violated by {worst[k]:.3g} of its size "
+                f"(QPROG promises {promise:.3g})")
     return None
 
 
