@@ -23,7 +23,7 @@ def parameter(name: str, value, *, positive: bool = False, largest: float | None
     try:
         value = float(value)
     except OverflowError:
-        raise ValueError(f"{name}={value} is too large for a double") from None
+        raise ValueError(f"{name} = an integer of {len(str(abs(value)))} digits is too large for a double") from None
     if not math.isfinite(value):
         raise ValueError(f"{name} must be finite, got {value!r}")
     if positive and value <= 0.0:
