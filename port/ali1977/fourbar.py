@@ -146,7 +146,9 @@ class Cognate:
     ``beta`` (rad) is the angle by which the cognate's frame is turned against the
     source's: the coupler triangle's signed angle at the follower pin B, atan2(l2 sin alp,
     l3 - l2 cos alp); the listing's ATAN(SBTA/CBTA) with SBTA = SQRT(1 - CBTA**2) >= 0
-    keeps it only in [0, 90) deg (D141, ``signed_beta=False``).  ``calp`` is the cognate's
+    keeps it only in [0, 90) deg (D141, ``signed_beta=False``); with ``signed_beta`` CL4 and CL5
+    come from the same components, not the law of cosines, which loses digits as the coupler
+    point nears B.  ``calp`` is the cognate's
     rigid coupler angle (gamma, about 101 deg in the example).
     """
     cl1: float
@@ -166,13 +168,18 @@ class Cognate:
         # the caller then reports the input angle where the results stop being finite.
         with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
             k = l2 / l3
-            cl4 = np.sqrt((l2 * l2) + (l3 * l3) - (2.0 * l2 * l3 * libm.cos(alp)))
+            if signed_beta:     # B -> P from its components: no law of cosines to lose digits as P nears B
+                along, across = l3 - l2 * math.cos(alp), l2 * math.sin(alp)
+                cl4 = np.float64(math.hypot(along, across))
+                cl5 = l5 * cl4 / l3
+            else:
+                cl4 = np.sqrt((l2 * l2) + (l3 * l3) - (2.0 * l2 * l3 * libm.cos(alp)))
+                cl5 = np.sqrt(((k * l5) * (k * l5)) + (l5 * l5) - (2.0 * l5 * l5 * k * libm.cos(alp)))
             cl3 = l4 * cl4 / l3
             cl2 = k * l4
-            cl5 = np.sqrt(((k * l5) * (k * l5)) + (l5 * l5) - (2.0 * l5 * l5 * k * libm.cos(alp)))
             cl1 = l1 * cl4 / l3
             if signed_beta:
-                beta = math.atan2(l2 * math.sin(alp), l3 - l2 * math.cos(alp))
+                beta = math.atan2(across, along)
             else:
                 cbta = ((l3 * l3) + (cl4 * cl4) - (l2 * l2)) / (2.0 * l3 * cl4)
                 sbta = np.sqrt(1.0 - cbta * cbta)
