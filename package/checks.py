@@ -23,7 +23,7 @@ def parameter(name: str, value, *, positive: bool = False, largest: float | None
     try:
         value = float(value)
     except OverflowError:
-        raise ValueError(f"{name} = an integer of {len(str(abs(value)))} digits is too large for a double") from None
+        raise ValueError(f"{name} = {_shown(value)} is too large for a double") from None
     if not math.isfinite(value):
         raise ValueError(f"{name} must be finite, got {value!r}")
     if positive and value <= 0.0:
@@ -31,6 +31,13 @@ def parameter(name: str, value, *, positive: bool = False, largest: float | None
     if largest is not None and abs(value) > largest:
         raise ValueError(f"{name} = {value!r} is out of range (at most {largest:g} in magnitude)")
     return value
+
+
+def _shown(value) -> str:
+    """``value`` for a message: an integer of more than 20 digits by its number of digits."""
+    if isinstance(value, numbers.Integral) and abs(int(value)) >= 10**20:
+        return f"an integer of {len(str(abs(int(value))))} digits"
+    return repr(value)
 
 
 def _real_number(name: str, value) -> None:
@@ -72,7 +79,7 @@ def integer(name: str, value, smallest: int = 1, largest: int = INTEGER_MAX) -> 
     if not isinstance(value, numbers.Integral) and not (math.isfinite(value) and float(value).is_integer()):
         raise ValueError(f"{name} must be an integer, got {value!r}")
     if not smallest <= value <= largest:
-        raise ValueError(f"{name} must be from {smallest} to {largest}, got {value!r}")
+        raise ValueError(f"{name} must be from {smallest} to {largest}, got {_shown(value)}")
     return int(value)
 
 
