@@ -1,15 +1,17 @@
 """Case I of Ali (1977): lumped mass at the path point, flexibility method.
 
-delta = beta^T F beta P  (eq. 6), for the source four-bar (eqs. 9-18) and its
-crossed coupler cognate (eqs. 19-28), with the 8x8 element flexibility F of
-eq. (29) and the inertia load P of the path-point mass.
+delta = beta^T F beta P  (eq. 6), for the source four-bar (eqs. 9-18, ``source``) and its
+crossed coupler cognate (eqs. 19-28, ``cognate``), with the 8x8 element flexibility F of
+eq. (29) and the inertia load P of the path-point mass (``structure``): ``source_case1`` and
+``cognate_case1`` are the two Case I listings, ``case1_deflection`` the deflection of any
+path point's Mechanics.  The example's data are ``data``'s.
 
 Units: inch, pound-force, second; ``alp`` in radians; input angles ``deg`` in
 degrees; ``rpm`` in rev/min; ``mass_lbf`` a weight in lbf (mass = W/g,
 g = 32.178*12 in/s^2 as the listings divide).  Deflections come out in inches,
 rotations in radians.  Everything is vectorised over the input angles: the statements the
 listings execute at each angle (positions, speeds, accelerations, beta) are loops over the
-angles compiled by numba (below, "The listings' statements at each input angle"), the
+angles compiled by numba (``linkage``, "The listings' statements at each input angle"), the
 matrices' products MPRD's (``real4.product``), the rest numpy.  A ``SourceLinkage`` or
 ``CognateLinkage`` is the four-bar's motion over the angles, once; ``path_point`` puts the
 path point on it at any distance along the extender (Case III's nodes).
@@ -30,6 +32,10 @@ finite raises SingularPositionError at the first angle where the first non-finit
 With ``quirks=PRINTED`` the formulas, the order of operations and the REAL*4
 storage are the listings', and the results equal the legacy build's.  Each
 quirk switched off removes one bug of the original (see ``quirks.py``).
+
+``Section``, ``EXAMPLE``, ``Mechanics``, the linkages, ``source_mechanics`` and
+``cognate_mechanics`` live in ``structure``, ``data``, ``linkage``, ``source`` and ``cognate``;
+they are importable from here too (``__all__``), as before the split.
 """
 from __future__ import annotations
 
@@ -38,12 +44,12 @@ import numpy as np
 from ...checks import angles_deg, weight_lbf
 from .. import libm
 from .cognate import CognateLinkage, _cognate_linkage, cognate_linkage, cognate_mechanics
-from .data import ALP_SOURCE_LISTING, EXAMPLE, PI_22_7, Example, _pi, expect
+from .data import EXAMPLE, expect
 from .fourbar import Lengths, check_finite
-from .linkage import Linkage, _extender_lengths, _finite, cramer_determinant, ieee
+from .linkage import Linkage, ieee
 from .quirks import CORRECTED, PRINTED, Quirks
 from .source import SourceLinkage, _source_linkage, source_linkage, source_mechanics
-from .structure import GRAVITY_IN, GRAVITY_REAL4, Mechanics, Section, deflection, flexibility, inertia_load
+from .structure import Mechanics, Section, deflection, flexibility, inertia_load
 
 __all__ = ["Section", "EXAMPLE", "Mechanics", "Linkage", "SourceLinkage", "CognateLinkage", "source_linkage",
            "cognate_linkage", "source_mechanics", "cognate_mechanics", "case1_deflection", "source_case1",

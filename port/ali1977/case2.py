@@ -19,7 +19,10 @@ from numba import njit
 from ...checks import angles_deg, as_real4, weight_lbf
 from .. import libm
 from .fourbar import Lengths, check_finite
-from .case1 import EXAMPLE, GRAVITY_IN, GRAVITY_REAL4, Section, _cognate_linkage, _pi, _source_linkage, deflection, expect, flexibility
+from .cognate import _cognate_linkage
+from .data import EXAMPLE, _pi, expect
+from .source import _source_linkage
+from .structure import GRAVITY_IN, GRAVITY_REAL4, Section, deflection, flexibility
 from .quirks import PRINTED, Quirks
 from ..real4 import store
 
@@ -71,7 +74,7 @@ def joint_loads(mech, lengths: Lengths, density: float, area: float, quirks: Qui
 @njit(cache=True, error_model="numpy")
 def _joint_loads(acc, xaa, yaa, xba, yba, c2, s2, c3, s3, c4, s4, m1, m2, m3, m4, g_const, real4, components,
                  plus_m_a, coupler):
-    """joint_loads at each input angle (compiled as ali1977.case1's kernels are): the path point's
+    """joint_loads at each input angle (compiled as ali1977.linkage's kernels are): the path point's
     XPA, YPA (in/s^2, REAL*4 with ``real4``), the pins' XAA..YBA, the cos and sin of t2, t3, t4,
     the links' weights m1..m4 (lbf), g (in/s^2) and the coupler's direction (joint_loads)."""
     loads = np.empty((c2.size, 8))

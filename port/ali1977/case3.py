@@ -27,7 +27,11 @@ import numpy as np
 from ...checks import angles_deg, as_real4, parameter, weight_lbf
 from .. import libm
 from .fourbar import Lengths, check_finite
-from .case1 import EXAMPLE, GRAVITY_IN, GRAVITY_REAL4, Section, SourceLinkage, _cognate_linkage, _pi, _source_linkage, cramer_determinant, deflection, expect, flexibility
+from .cognate import _cognate_linkage
+from .data import EXAMPLE, _pi, expect
+from .linkage import cramer_determinant
+from .source import SourceLinkage, _source_linkage
+from .structure import GRAVITY_IN, GRAVITY_REAL4, Section, deflection, flexibility
 from .quirks import PRINTED, Quirks
 from ..real4 import store
 

@@ -89,7 +89,8 @@ def _extender_lengths(length) -> np.ndarray:
 @dataclass
 class Linkage:
     """A four-bar over the input angles up to its coupler: all that does not depend on where
-    the path point sits on the extender (the source's and the cognate's, below).
+    the path point sits on the extender (the source's and the cognate's: ``source.SourceLinkage``,
+    ``cognate.CognateLinkage``).
 
     ``t2`` (rad) the input angle, ``t3``, ``t4`` the coupler's and follower's, ``ext_angle`` the
     extender's direction; ``om2``, ``om3`` (rad/s), ``alph3`` (rad/s^2); the cosines and sines

@@ -6,9 +6,12 @@ import pytest
 
 from linkrepro.legacy import ali1977
 from linkrepro.port.ali1977 import CORRECTED, Lengths, source_case1
-from linkrepro.port.ali1977.case1 import EXAMPLE, cognate_mechanics, deflection, flexibility, source_mechanics
 from linkrepro.port.ali1977.case2 import COGNATE_COUPLER, LISTING as CASE2, beta2, case2_cognate, case2_source, joint_loads
 from linkrepro.port.ali1977.case3 import LISTING as CASE3, _coupled_tip, case3_cognate, case3_source, node_positions
+from linkrepro.port.ali1977.cognate import cognate_mechanics
+from linkrepro.port.ali1977.data import EXAMPLE
+from linkrepro.port.ali1977.source import source_mechanics
+from linkrepro.port.ali1977.structure import deflection, flexibility
 
 DEG = np.arange(0.0, 361.0, 1.0)
 AREA, DENSITY = EXAMPLE.section.area, 0.098

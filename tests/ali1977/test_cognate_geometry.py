@@ -29,7 +29,8 @@ from hypothesis import strategies as st
 from linkrepro import ListingBugWarning, SingularPositionError
 from linkrepro.legacy import ali1977
 from linkrepro.port.ali1977 import case2, case3
-from linkrepro.port.ali1977.case1 import cognate_case1, cognate_mechanics, source_case1
+from linkrepro.port.ali1977.case1 import cognate_case1, source_case1
+from linkrepro.port.ali1977.cognate import cognate_mechanics
 from linkrepro.port.ali1977.fourbar import Lengths
 from linkrepro.port.ali1977.quirks import CORRECTED, PRINTED
 

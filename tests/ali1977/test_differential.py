@@ -52,7 +52,11 @@ from linkrepro.legacy import ali1977
 from linkrepro.errors import AssemblyError, LinkreproWarning, SingularPositionError
 from linkrepro.port.ali1977 import case2, case3 as ked_case3
 from linkrepro.port.ali1977.fourbar import Lengths
-from linkrepro.port.ali1977.case1 import PRINTED, Section, cognate_case1, cognate_mechanics, source_case1, source_mechanics
+from linkrepro.port.ali1977.case1 import cognate_case1, source_case1
+from linkrepro.port.ali1977.cognate import cognate_mechanics
+from linkrepro.port.ali1977.quirks import PRINTED
+from linkrepro.port.ali1977.source import source_mechanics
+from linkrepro.port.ali1977.structure import Section
 
 PI_22_7 = ali1977.PI_PRINTED
 

@@ -13,10 +13,14 @@ import pytest
 from linkrepro import SingularPositionError
 from linkrepro.legacy import ali1977
 from linkrepro.port.ali1977 import case1
-from linkrepro.port.ali1977.case1 import EXAMPLE, Mechanics, case1_deflection, cognate_mechanics, source_mechanics
+from linkrepro.port.ali1977.case1 import case1_deflection
 from linkrepro.port.ali1977.case3 import node_positions
+from linkrepro.port.ali1977.cognate import cognate_mechanics
+from linkrepro.port.ali1977.data import EXAMPLE
 from linkrepro.port.ali1977.fourbar import Lengths
 from linkrepro.port.ali1977.quirks import CORRECTED, PRINTED
+from linkrepro.port.ali1977.source import source_mechanics
+from linkrepro.port.ali1977.structure import Mechanics
 
 EXAMPLE_LINKS = np.array([10.0, 10.0, 30.0, 25.0, 30.0])
 DEG = np.arange(0.0, 360.0, 30.0)
@@ -104,7 +108,7 @@ def test_an_alp_beyond_a_million_radians_is_refused_alike():
 @pytest.mark.parametrize("value", [5e-324, 1e-50, 1e300])
 def test_section_values_beyond_a_real4_literal_are_refused_in_every_mode(value):
     """A subnormal modulus divided the corrected port's F by zero (ZeroDivisionError)."""
-    from linkrepro.port.ali1977.case1 import Section
+    from linkrepro.port.ali1977.structure import Section
     with pytest.raises(ValueError, match="section modulus"):
         Section(0.2, value, 0.003)
     with pytest.raises(ValueError, match="section modulus"):

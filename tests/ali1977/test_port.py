@@ -5,7 +5,11 @@ import pytest
 from linkrepro import AssemblyError, SingularPositionError
 from linkrepro.legacy import ali1977
 from linkrepro.port.ali1977 import CORRECTED, PRINTED, Lengths, Section, cognate_case1, source_case1
-from linkrepro.port.ali1977.case1 import EXAMPLE, case1_deflection, cognate_mechanics, flexibility, source_mechanics
+from linkrepro.port.ali1977.case1 import case1_deflection
+from linkrepro.port.ali1977.cognate import cognate_mechanics
+from linkrepro.port.ali1977.data import EXAMPLE
+from linkrepro.port.ali1977.source import source_mechanics
+from linkrepro.port.ali1977.structure import flexibility
 
 DEG = np.arange(0.0, 361.0, 1.0)
 RPM = 300.0
@@ -163,3 +167,24 @@ def test_port_bad_input_typed_errors():
         source_case1([0.0, float("nan")], quirks=CORRECTED)
     with pytest.raises(ValueError):
         case1_deflection(source_mechanics([0.0]), float("inf"), EXAMPLE.section, PRINTED)
+
+
+def test_case1_names_where_users_and_the_fuzz_find_them():
+    """Case I's module split into data, structure, linkage, source, cognate and case1 (issue 23):
+    every name of case1's ``__all__`` is importable from it and is the object its own module
+    defines; the package exports what it did."""
+    import linkrepro.port.ali1977 as package
+    from linkrepro.port.ali1977 import case1, cognate, data, linkage, quirks, source, structure
+
+    home = {"Section": structure, "Mechanics": structure, "EXAMPLE": data, "Linkage": linkage,
+            "SourceLinkage": source, "source_linkage": source, "source_mechanics": source,
+            "CognateLinkage": cognate, "cognate_linkage": cognate, "cognate_mechanics": cognate,
+            "PRINTED": quirks, "CORRECTED": quirks, "Quirks": quirks,
+            "case1_deflection": case1, "source_case1": case1, "cognate_case1": case1}
+    assert sorted(case1.__all__) == sorted(home)
+    for name, module in home.items():
+        assert getattr(case1, name) is getattr(module, name), name
+    assert sorted(package.__all__) == sorted(["CORRECTED", "PRINTED", "Quirks", "Lengths", "Section", "Cognate",
+                                              "EXAMPLE", "source_case1", "cognate_case1"])
+    assert package.Section is structure.Section and package.EXAMPLE is data.EXAMPLE
+    assert package.source_case1 is case1.source_case1 and package.cognate_case1 is case1.cognate_case1

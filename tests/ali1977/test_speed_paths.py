@@ -7,8 +7,9 @@ import pytest
 
 from linkrepro.harness.scenes.ali1977 import case3_convergence
 from linkrepro.port.ali1977 import CORRECTED, PRINTED, case3 as ked_case3
-from linkrepro.port.ali1977.case1 import cognate_linkage, source_linkage
 from linkrepro.port.ali1977.case3 import LISTING, case3_linkage, case3_on_linkage, case3_source
+from linkrepro.port.ali1977.cognate import cognate_linkage
+from linkrepro.port.ali1977.source import source_linkage
 from linkrepro.port.real4 import product
 
 DEG = np.arange(0.0, 361.0, 15.0)

@@ -26,11 +26,13 @@ import numpy as np
 import pandas as pd
 
 from ....port import libm
-from ....port.ali1977.case1 import EXAMPLE, GRAVITY_IN, GRAVITY_REAL4, _cognate_linkage, deflection, flexibility
+from ....port.ali1977.cognate import _cognate_linkage
+from ....port.ali1977.data import EXAMPLE
 from ....port.ali1977.case2 import COGNATE_LISTING as CASE2_COGNATE
 from ....port.ali1977.case2 import DENSITY, beta2, case2_source
 from ....port.ali1977.case3 import COGNATE_LISTING as CASE3_COGNATE
 from ....port.ali1977.case3 import case3_source, node_weights
+from ....port.ali1977.structure import GRAVITY_IN, GRAVITY_REAL4, deflection, flexibility
 from ....port.real4 import store
 from ...published_tables import PublishedTable
 

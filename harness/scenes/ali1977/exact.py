@@ -16,8 +16,9 @@ from __future__ import annotations
 
 import mpmath
 
-from ....port.ali1977.case1 import EXAMPLE, Section
+from ....port.ali1977.data import EXAMPLE
 from ....port.ali1977.fourbar import Lengths
+from ....port.ali1977.structure import Section
 
 DIGITS = 60
 
