@@ -1,12 +1,12 @@
 """The harness: scenes, engines, cell-by-cell diff against the published tables, report.
 
 ``load(scene, out=None)`` (``harness/results.py``): a scene's CSVs as pandas DataFrames with
-their units; ``describe(scene, column)`` (``harness/quantities.py``): what a column means, in
+their units; ``describe(scene, column)`` (also ``harness/results.py``): what a column means, in
 words, and its unit.  Both are imported when first used (the scenes import every engine).
 """
 from __future__ import annotations
 
-_LAZY = {"load": "results", "describe": "quantities"}
+_LAZY = {"load": "results", "describe": "results"}
 __all__ = list(_LAZY)
 
 

@@ -12,7 +12,8 @@ Two parts, printed as markdown and written to ``--out`` (bench.md, bench.png, be
    time, and the Pareto front (the settings no other setting beats in both).
 
 This module is the machine; each thesis's computations, knobs, sweeps and flop counts are
-in its ``harness/scenes/<thesis>/bench.py`` (found through ``harness.scenes``).
+in its ``harness/scenes/<thesis>/bench.py``; ``harness/bench_run.py`` finds them through the
+scene registry (``harness.scenes``) and runs them (``run_bench``).
 
 Times: ``time.perf_counter``, best of ``repeat`` calls, the engines of one computation (or
 the settings of one knob) taken in turn within each round so that the machine's load falls on
@@ -34,7 +35,6 @@ import numpy as np
 import pandas as pd
 
 from . import progress
-from .scenes import bench_computations as computations, bench_knobs as knobs, bench_sweeps as sweeps
 
 #: the port's package (linkrepro.port), whose caches are cleared before each timed call
 PORT = __name__.split(".")[0] + ".port"
@@ -86,7 +86,7 @@ def timed(funcs: dict[str, Callable], repeat: int) -> dict[str, tuple[float, obj
     return {name: (best[name], results[name]) for name in funcs}
 
 
-def _step(what: str, func: Callable):
+def step(what: str, func: Callable):
     """func(), shown as ``what`` on the progress line (stderr, when it is a terminal)."""
     progress.note("bench", what)
     result = func()
@@ -113,14 +113,6 @@ class Computation:
 def relative_error(a: np.ndarray, b: np.ndarray) -> float:
     """max |a - b| / max |b|."""
     return float(np.max(np.abs(a - b)) / np.max(np.abs(b)))
-
-
-def warm_up() -> None:
-    """Call every engine once on the quick configuration, untimed: numba compiles (or loads) its
-    kernels at their first call, which a timing must not see."""
-    for comp in computations(quick=True):
-        for func in comp.engines.values():
-            func()
 
 
 def cost_rows(comp: Computation, repeat: int) -> list[dict]:
@@ -189,7 +181,7 @@ def knob_rows(knob: Knob, repeat: int) -> list[dict]:
 class Sweep:
     """A knob measured by a study of its own rather than by ``timed``: ``rows(repeat)``, its
     rows of bench.csv (the Pareto front marked, ``with_pareto_front``); ``what``, its description in
-    bench.md.  A sweep has many settings: ``run_bench`` gives it ``repeat // 10`` calls a
+    bench.md.  A sweep has many settings: ``bench_run.run_bench`` gives it ``repeat // 10`` calls a
     timing, at least 1."""
     name: str
     what: str
@@ -316,33 +308,3 @@ def plot(frame: pd.DataFrame, path: Path) -> None:
     fig.tight_layout()
     fig.savefig(path, dpi=90)
     plt.close(fig)
-
-
-def run_bench(repeat: int = 10, out: Path | str = Path("out/bench"), quick: bool = False) -> str:
-    """Run the bench; write OUT/bench.md, bench.png, bench.csv; return the markdown.
-
-    ``repeat``: calls per timing (best of; a sweep takes repeat // 10, at least 1); ``quick``:
-    the reduced configuration (each thesis's smallest: few positions, three settings a knob, no
-    sweep), a smoke test of a few seconds."""
-    if repeat < 1:
-        raise ValueError("repeat must be >= 1")
-    start, out = time.perf_counter(), Path(out)
-    comps, knob_list, sweep_list = computations(quick), knobs(quick), sweeps(quick)
-    descriptions = {k.name: f"{k.what} ({k.engine})" for k in knob_list} | {s.name: s.what for s in sweep_list}
-    with progress.Bar(1 + len(comps) + len(knob_list) + len(sweep_list)):
-        _step("warming up (the first run compiles the numba kernels)", warm_up)
-        rows = []
-        for comp in comps:
-            rows += _step(comp.name, lambda: cost_rows(comp, repeat))
-        for knob in knob_list:
-            rows += _step(f"knob: {knob.name}", lambda: knob_rows(knob, repeat))
-        for sweep in sweep_list:
-            rows += _step(f"knob: {sweep.name}", lambda: sweep.rows(max(1, repeat // 10)))
-    frame = pd.DataFrame(rows).reindex(columns=COLUMNS)
-    out.mkdir(parents=True, exist_ok=True)
-    md, png, csv = (out / name for name in OUTPUTS)
-    frame.to_csv(csv, index=False)
-    plot(frame, png)
-    text = markdown(frame, descriptions, repeat, time.perf_counter() - start, png.name)
-    md.write_text(text)
-    return text

@@ -58,11 +58,16 @@ def _repeat(text: str) -> int:
     return value
 
 
-def _parser() -> tuple[_Parser, dict[str, _Parser]]:
+def _parser() -> tuple[_Parser, dict[str, _Parser], dict]:
+    """The parser, its subparsers by command, and the theses' own commands by name (found
+    through the scene registry, ``harness/command.py``)."""
+    from .scenes import commands
+    theirs = {command.name: command for command in commands()}
     parser = _Parser(prog=PROG, description=(
         "Rebuild, port and diff the FORTRAN of three mechanism-dynamics theses."),
         epilog="Exit status: 0 done, 1 a run failed, 2 a usage error, 130 interrupted.")
-    sub = parser.add_subparsers(dest="command", required=True, metavar="{reproduce,scenes,explain,bench,arithmetic}")
+    names = ["reproduce", "scenes", "explain", "bench", *theirs]
+    sub = parser.add_subparsers(dest="command", required=True, metavar="{" + ",".join(names) + "}")
     rep = sub.add_parser("reproduce", help="run every engine of the scenes and write the report")
     rep.add_argument("scenes", nargs="*", help="scene names (default: all; see `linkrepro scenes`)")
     rep.add_argument("--out", default=Path("out"), type=_out_folder,
@@ -87,13 +92,13 @@ def _parser() -> tuple[_Parser, dict[str, _Parser]]:
     bench.add_argument("--quick", action="store_true",
                        help="a reduced configuration (the tables' 19 angles, three settings a knob, no Case III "
                             "sweep): a smoke test of a few seconds")
-    arith = sub.add_parser("arithmetic", help="rebuild the Rahman (1996) FORTRAN under the arithmetics of "
-                           "1996 machines (needs gfortran; about 20 s of CPU): which printed digits survive "
-                           "a change of compiler")
-    arith.add_argument("--out", default=Path("out/arithmetic"), type=_out_folder,
-                       help="output folder for arithmetic.md, arithmetic.csv, arithmetic_cells.csv "
-                            "(default: out/arithmetic/, which reproduce's report links)")
-    return parser, {"reproduce": rep, "scenes": scenes, "explain": explain, "bench": bench, "arithmetic": arith}
+    subparsers = {"reproduce": rep, "scenes": scenes, "explain": explain, "bench": bench}
+    for command in theirs.values():
+        own = sub.add_parser(command.name, help=command.help)
+        own.add_argument("--out", default=command.default_out, type=_out_folder, help=command.out_help)
+        command.add_arguments(own)
+        subparsers[command.name] = own
+    return parser, subparsers, theirs
 
 
 def _scene_titles() -> dict[str, str]:
@@ -210,21 +215,12 @@ def _write_outputs(out: Path, outputs, writer: str, job, failures: tuple = ()) -
 def _bench(args: argparse.Namespace) -> int:
     """``linkrepro bench``: --out checked writable before the run (status 2), a failed write
     after it status 1; the markdown printed."""
-    from .bench import OUTPUTS, run_bench
+    from .bench_run import OUTPUTS, run_bench
     return _write_outputs(args.out, OUTPUTS, "the bench", lambda: run_bench(args.repeat, args.out, quick=args.quick))
 
 
-def _arithmetic(args: argparse.Namespace) -> int:
-    """``linkrepro arithmetic``: --out checked first (status 2); no gfortran or a reference build
-    that fails, status 1; the markdown printed."""
-    from .scenes.rahman1996.arithmetic import OUTPUTS, ReferenceFailed, write
-    from .readings import CompilerError
-    return _write_outputs(args.out, OUTPUTS, "the measurement", lambda: write(args.out)[3],
-                          (CompilerError, ReferenceFailed))
-
-
 def _main(argv: list[str] | None) -> int:
-    parser, commands = _parser()
+    parser, commands, theirs = _parser()
     args = parser.parse_args(argv)
     if args.command == "scenes":
         titles = _scene_titles()
@@ -237,8 +233,10 @@ def _main(argv: list[str] | None) -> int:
         return _explain(args, commands["explain"])
     if args.command == "bench":
         return _bench(args)
-    if args.command == "arithmetic":
-        return _arithmetic(args)
+    if args.command in theirs:          # a thesis's own command (harness/command.py)
+        command = theirs[args.command]
+        return _write_outputs(args.out, command.outputs, f"linkrepro {command.name}", lambda: command.run(args),
+                              command.failures)
     raise AssertionError(f"command {args.command!r} has no branch")
 
 

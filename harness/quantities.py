@@ -1,19 +1,19 @@
-"""What every column of every scene's CSVs means, in words, and its unit.
+"""What a column of a scene's CSVs means, in words, and its unit: ``Quantity``.
 
-``describe(scene, column)`` gives a ``Quantity``: ``words``, ``unit`` ("in", "deg", "lbf",
-"lbf in", ...; "" for a pure number or a text) and ``label`` ("words (unit)") for a table
-heading or an axis.  The same call describes a row's quantity in a long file (the ``dx`` of
-a curve, the ``src_dx`` of a diff row): a column whose unit changes from row to row names,
-in ``per_row``, the column that holds each row's quantity.
+A ``Quantity`` has ``words``, ``unit`` ("in", "deg", "lbf", "lbf in", ...; "" for a pure
+number or a text) and ``label`` ("words (unit)") for a table heading or an axis.  It also
+describes a row's quantity in a long file (the ``dx`` of a curve, the ``src_dx`` of a diff
+row): a column whose unit changes from row to row names, in ``per_row``, the column that holds
+each row's quantity.
 
 The data: each thesis's ``harness/scenes/<thesis>/quantities.py`` (its ``QUANTITIES``,
 scene -> name -> Quantity), and here the columns of ``diff.csv``, which every table scene
-writes (``DIFF``).  Nothing here names a thesis.
+writes (``DIFF``).  ``harness.results.describe(scene, column)`` looks one up.  Nothing here
+names a thesis.
 """
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
 
 
 @dataclass(frozen=True)
@@ -46,26 +46,3 @@ DIFF = {
     "legacy": Quantity("the legacy engine's value of the cell", "", per_row="column"),
     "diff_vs_legacy": Quantity("engine - legacy", "", per_row="column"),
 }
-
-
-@lru_cache(maxsize=None)
-def described(scene: str) -> dict[str, Quantity]:
-    """Every name ``scene``'s CSVs use (columns, and the row quantities of its long files),
-    described.  KeyError naming the known scenes if ``scene`` is not one."""
-    from . import scenes                   # every thesis's engines: imported when first asked
-    scenes.get(scene)
-    names = dict(DIFF) if scene in scenes.TABLES else {}
-    for thesis in scenes.THESES:
-        names.update(getattr(thesis, "QUANTITIES", {}).get(scene, {}))
-    return names
-
-
-def describe(scene: str, column: str) -> Quantity:
-    """What ``column`` (or a row's quantity) of ``scene``'s CSVs means, and its unit.
-    KeyError, saying what is described, if the scene or the name is unknown."""
-    names = described(scene)
-    try:
-        return names[column]
-    except KeyError:
-        raise KeyError(f"scene {scene!r} describes no column or quantity {column!r}; it describes "
-                       f"{', '.join(names) or 'nothing'}") from None

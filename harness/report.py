@@ -12,7 +12,6 @@ import pandas as pd
 from matplotlib.figure import Figure
 
 from .diff import column_max, summary
-from .quantities import describe
 from .register import Deviation
 
 STYLE = {"published": dict(marker="o", ls="none", color="k", ms=4),
@@ -44,9 +43,9 @@ def plot_scene(scene, published, results: dict[str, pd.DataFrame], outdir: Path)
     down = -(-columns // across)
     fig = Figure(figsize=(3.3 * across, 2.35 * down + 0.85))
     axes = fig.subplots(down, across, squeeze=False, sharex=True)
-    key = describe(scene.name, scene.key)
+    key = scene.describe(scene.key)
     for ax, col in zip(axes.flat, scene.values):
-        what = describe(scene.name, col)
+        what = scene.describe(col)
         for engine, frame in frames.items():
             if engine == "published" or frame[col].notna().any():
                 ax.plot(frame[scene.key].to_numpy(), frame[col].to_numpy(), label=engine, **STYLE.get(engine, {}))

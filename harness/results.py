@@ -9,19 +9,43 @@ becomes a DataFrame keyed by its file stem, with
 - in a long file whose unit changes from row to row (diff.csv: the table column each row
   names; a curve's quantity), a ``unit`` column: that row's unit for those columns.
 
-What each column means: ``harness.quantities.describe(scene, column)``.
+What each column means: ``describe(scene, column)``, a ``harness.quantities.Quantity``.
 """
 from __future__ import annotations
 
 import tempfile
 import warnings
+from functools import lru_cache
 from pathlib import Path
 
 import pandas as pd
 
 from . import progress
-from .quantities import describe
+from .quantities import DIFF, Quantity
 from .scene import RunOptions
+
+
+@lru_cache(maxsize=None)
+def described(scene: str) -> dict[str, Quantity]:
+    """Every name ``scene``'s CSVs use (columns, and the row quantities of its long files),
+    described.  KeyError naming the known scenes if ``scene`` is not one."""
+    from . import scenes                   # every thesis's engines: imported when first asked
+    scenes.get(scene)
+    names = dict(DIFF) if scene in scenes.TABLES else {}
+    for thesis in scenes.THESES:
+        names.update(getattr(thesis, "QUANTITIES", {}).get(scene, {}))
+    return names
+
+
+def describe(scene: str, column: str) -> Quantity:
+    """What ``column`` (or a row's quantity) of ``scene``'s CSVs means, and its unit.
+    KeyError, saying what is described, if the scene or the name is unknown."""
+    names = described(scene)
+    try:
+        return names[column]
+    except KeyError:
+        raise KeyError(f"scene {scene!r} describes no column or quantity {column!r}; it describes "
+                       f"{', '.join(names) or 'nothing'}") from None
 
 
 def load(scene: str, out: str | Path | None = None) -> dict[str, pd.DataFrame]:
@@ -43,7 +67,7 @@ def load(scene: str, out: str | Path | None = None) -> dict[str, pd.DataFrame]:
 
 def read(scene: str, path: str | Path) -> pd.DataFrame:
     """One CSV of ``scene``'s output, with its units (see the module's docstring).
-    KeyError if a column is not described in ``harness/quantities.py``'s registry."""
+    KeyError if a column is not described (``describe``)."""
     frame = pd.read_csv(path)
     described = {column: describe(scene, column) for column in frame.columns}
     keys = {q.per_row for q in described.values() if q.per_row}

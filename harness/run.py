@@ -162,7 +162,8 @@ def reproduce(names: list[str] | None, out_dir: Path, measure_readings: bool = T
     out_dir = Path(out_dir)
     check_output_folder(out_dir, names)
     if measure_readings:
-        readings.require_compiler({name: TABLES[name].table for name in names if name in TABLES})
+        readings.require_compiler({name: (TABLES[name].table, TABLES[name].readings) for name in names
+                                   if name in TABLES})
     start = time.perf_counter()
     with progress.Bar(len(names)):
         results = _run_groups(_groups(names), out_dir, RunOptions(measure_readings))

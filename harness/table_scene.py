@@ -16,6 +16,7 @@ from .diff import diff_scene, summary
 from .engines import ENGINES, PrintedProgramError
 from .listing_lines import Statement
 from .published_tables import PublishedTable
+from .quantities import DIFF, Quantity
 from .report import plot_scene, scene_report
 from .scene import Outcome, RunOptions
 
@@ -42,6 +43,11 @@ class TableScene:
     sections: tuple[Callable[["TableScene", PublishedTable, pd.DataFrame, Path], str], ...] = ()
     #: where the listings compute or write a cell: (row key as printed, column) -> Statements
     statements: Callable[[str, str], tuple[Statement, ...]] = lambda row, column: ()
+    #: what each column of the scene's CSVs means, and its unit (its thesis's QUANTITIES[name])
+    quantities: dict[str, Quantity] = field(default_factory=dict)
+    #: the thesis's reading driver (``harness/readings.py``): rebuilds its listings with the
+    #: scan's literal text; None: no reading of the register is counted on this table
+    readings: Any = None
 
     @property
     def keys(self) -> tuple[str, ...]:
@@ -50,6 +56,13 @@ class TableScene:
     @property
     def key_name(self) -> str:
         return "/".join(self.keys)
+
+    def describe(self, column: str) -> Quantity:
+        """What ``column`` of this table's CSVs (or of its diff.csv) means, and its unit."""
+        try:
+            return {**DIFF, **self.quantities}[column]
+        except KeyError:
+            raise KeyError(f"scene {self.name!r} describes no column {column!r}") from None
 
     @property
     def values(self) -> list[str]:
@@ -102,8 +115,9 @@ class TableScene:
         for section in self.sections:
             text = section(self, published, diff, target)
             extra += "\n\n" + text if text else ""
-        if readings.has_readings(self.table):      # an empty measurement says why it is empty
-            extra += "\n\n" + (readings.as_markdown(readings.measure(self.table)) if options.measure_readings else
+        if readings.has_readings(self.table, self.readings):      # an empty measurement says why it is empty
+            extra += "\n\n" + (readings.as_markdown(readings.measure(self.table, self.readings), self.readings)
+                                if options.measure_readings else
                                 "## Reading alternatives\n\nNot measured (skipped on request: --skip-readings).")
         (target / "report.md").write_text(scene_report(self, diff, timings, register, plots, extra))
         counts = summary(diff)

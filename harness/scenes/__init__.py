@@ -30,12 +30,13 @@ def report_links(out_dir) -> list[str]:
     return [line for thesis in THESES for line in getattr(thesis, "report_links", lambda _: [])(out_dir)]
 
 
-def _bench_modules() -> list:
-    """Each thesis's ``bench`` module (its part of ``linkrepro bench``, see ``harness/bench.py``),
-    where it has one."""
+def hook_modules(hook: str) -> list:
+    """Each thesis's ``<hook>`` module (``bench``: its part of ``linkrepro bench``, see
+    ``harness/bench.py``; ``fuzz``: its entry points, ``harness/fuzz_calls.py``; ``commands``: its
+    own commands, ``harness/command.py``), where it has one."""
     modules = []
     for thesis in THESES:
-        name = f"{thesis.__name__}.bench"
+        name = f"{thesis.__name__}.{hook}"
         try:
             modules.append(importlib.import_module(name))
         except ModuleNotFoundError as err:
@@ -44,9 +45,14 @@ def _bench_modules() -> list:
     return modules
 
 
+def commands() -> list:
+    """Every thesis's own commands (``COMMANDS`` of its ``commands`` module)."""
+    return [command for module in hook_modules("commands") for command in module.COMMANDS]
+
+
 def _bench_hook(hook: str, quick: bool) -> list:
     """What each thesis's ``bench.<hook>(quick)`` returns, thesis by thesis (none: nothing)."""
-    return [item for module in _bench_modules() for item in getattr(module, hook, lambda _: [])(quick)]
+    return [item for module in hook_modules("bench") for item in getattr(module, hook, lambda _: [])(quick)]
 
 
 def bench_computations(quick: bool) -> list:

@@ -13,7 +13,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from linkrepro.harness import bench
+from linkrepro.harness import bench, bench_run
 from linkrepro.harness.cli import main
 
 
@@ -31,7 +31,7 @@ def test_pareto_front_single_and_dominating_points():
     assert bench.pareto_front([1.0, 1.0], [np.nan, 2.0]).tolist() == [False, True]
 
 
-@pytest.mark.parametrize("knob", bench.knobs(quick=True), ids=lambda k: k.name)
+@pytest.mark.parametrize("knob", bench_run.knobs(quick=True), ids=lambda k: k.name)
 def test_reference_setting_has_zero_error(knob):
     rows = bench.knob_rows(knob, repeat=1)
     by_setting = {row["setting"]: row for row in rows}
@@ -42,7 +42,7 @@ def test_reference_setting_has_zero_error(knob):
 
 
 def test_a_failed_newton_setting_is_inf_and_off_the_front():
-    cap = next(k for k in bench.knobs(quick=True) if k.name == "1991 Newton iteration cap")
+    cap = next(k for k in bench_run.knobs(quick=True) if k.name == "1991 Newton iteration cap")
     rows = {row["setting"]: row for row in bench.knob_rows(cap, repeat=1)}
     assert rows["10"]["error"] == np.inf and "failed at" in rows["10"]["note"]
     assert not rows["10"]["pareto"]
@@ -92,4 +92,4 @@ def test_bench_out_that_is_a_file_is_a_usage_error(tmp_path):
 
 def test_run_bench_rejects_a_bad_repeat(tmp_path):
     with pytest.raises(ValueError):
-        bench.run_bench(0, Path(tmp_path), quick=True)
+        bench_run.run_bench(0, Path(tmp_path), quick=True)

@@ -16,7 +16,8 @@ import pytest
 
 from linkrepro.harness import load
 from linkrepro.harness.published_tables import PUBLISHED_DIR, PublishedTable
-from linkrepro.harness.quantities import Quantity, describe
+from linkrepro.harness.quantities import Quantity
+from linkrepro.harness.results import describe
 from linkrepro.harness.scene import RunOptions
 from linkrepro.harness.scenes import SCENES, TABLES
 

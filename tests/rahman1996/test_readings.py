@@ -1,6 +1,7 @@
-"""harness/readings.py on the 1996 program: the OCR readings of D116 and D117 ([[deviation.reading]]
-items of rahman1996_cssp_main.f) put back in legacy/src, built and run by harness/arithmetic.py's
-driver, counted on Tables 5.2-5.7 (crank 0-350, within 1e-6 relative)."""
+"""harness/readings.py with Rahman (1996)'s driver (harness/scenes/rahman1996/readings.py): the OCR
+readings of D116 and D117 ([[deviation.reading]] items of rahman1996_cssp_main.f) put back in
+legacy/src, built and run by the arithmetic study's driver, counted on Tables 5.2-5.7 (crank
+0-350, within 1e-6 relative)."""
 import shutil
 import tomllib
 
@@ -9,6 +10,7 @@ import pytest
 
 from linkrepro.harness.scenes.rahman1996 import arithmetic as A
 from linkrepro.harness import readings as R
+from linkrepro.harness.scenes.rahman1996 import readings as CR
 from linkrepro.harness.register import REGISTER_PATH
 
 needs_gfortran = pytest.mark.skipif(shutil.which("gfortran") is None, reason="needs gfortran")
@@ -21,9 +23,9 @@ def _entry(entry_id: str) -> dict:
 
 
 def test_1996_tables_are_the_series_of_arithmetic():
-    assert R.CSSP_TABLES == tuple(f"rahman1996_table{t}" for t in A.SERIES)
-    assert all(R.has_readings(t) for t in R.CSSP_TABLES)
-    assert not R.has_readings("rahman1996_table5_1")
+    assert CR.CSSP_TABLES == tuple(f"rahman1996_table{t}" for t in A.SERIES)
+    assert all(R.has_readings(t, CR) for t in CR.CSSP_TABLES)
+    assert not R.has_readings("rahman1996_table5_1", CR)
 
 
 def test_readings_are_whole_lines_of_legacy_src(root):
@@ -31,7 +33,7 @@ def test_readings_are_whole_lines_of_legacy_src(root):
     scan text fits fixed form (gfortran drops what passes column 72)."""
     for entry_id in ("D116", "D117"):
         for item in _entry(entry_id)["reading"]:
-            assert item["file"] in R.CSSP_FILES
+            assert item["file"] in CR.CSSP_FILES
             lines = (root / "legacy" / "src" / item["file"]).read_text().split("\n")
             assert lines.count(item["chosen"]) >= item.get("occurrence", 1), item["chosen"]
             assert item["scan"] != item["chosen"] and len(item["scan"]) <= 72, item["scan"]
@@ -41,7 +43,7 @@ def test_occurrence_picks_the_statement_named():
     """f2y(7)'s continuation line is also f2y(5)'s (both print ty(5)): occurrence 2 is f2y(7)'s."""
     item = next(i for i in _entry("D117")["reading"] if "ty(5)*sin(ETA2)*sin(THT2)" in i["chosen"])
     text = (R.SRC_DIR / item["file"]).read_text()
-    put = R._put_back(text, item["file"], [item]).split("\n")
+    put = R.put_back(text, item["file"], [item]).split("\n")
     changed = [k for k, (a, b) in enumerate(zip(text.split("\n"), put)) if a != b]
     assert len(changed) == 1 and put[changed[0] - 1].strip().startswith("f2y(7)=")
 
@@ -50,7 +52,7 @@ def test_d116_scan_text_is_plus_for_star():
     """D116: each scan line is its chosen line with the '*' the OCR read as '+'."""
     for item in _entry("D116")["reading"]:
         assert item["scan"] == item["chosen"].replace("*", "+")
-    assert [g for g, _ in R._groups(_entry("D116"))] == ["loop 50", "f1y", "f2z, first branch"]
+    assert [g for g, _ in R.groups(_entry("D116"))] == ["loop 50", "f1y", "f2z, first branch"]
 
 
 def test_d117_scan_text_moves_one_parenthesis():
@@ -62,12 +64,12 @@ def test_d117_scan_text_moves_one_parenthesis():
         else:
             assert abs(chosen.count(")") - scan.count(")")) == 1
             assert chosen.replace(")", "") == scan.replace(")", "")
-    assert [g for g, _ in R._groups(_entry("D117"))] == ["f2x(5..8)", "f2y(7), f2y(8)", "rsq", "msq", "f2z(5)"]
+    assert [g for g, _ in R.groups(_entry("D117"))] == ["f2x(5..8)", "f2y(7), f2y(8)", "rsq", "msq", "f2z(5)"]
 
 
 def test_a_chosen_line_not_in_legacy_src_is_an_error():
     with pytest.raises(ValueError, match="occurs fewer than"):
-        R.cssp_counts((("D999", "", (("rahman1996_cssp_main.f", "      NO SUCH LINE", "      X=1", 1),)),))
+        CR.cssp_counts((("D999", "", (("rahman1996_cssp_main.f", "      NO SUCH LINE", "      X=1", 1),)),))
 
 
 @pytest.fixture(scope="module")
@@ -93,7 +95,7 @@ def legacy_counts():
 def measured():
     if shutil.which("gfortran") is None:
         pytest.skip("needs gfortran")
-    frames = {t: R.measure(f"rahman1996_table{t.replace('.', '_')}") for t in ALL}
+    frames = {t: R.measure(f"rahman1996_table{t.replace('.', '_')}", CR) for t in ALL}
     for frame in frames.values():
         assert not frame.empty
     return frames
@@ -160,7 +162,7 @@ def test_d117_other_grouping_loses_the_tables_it_claims(measured, legacy_counts)
 @needs_gfortran
 def test_report_section(measured):
     frame = measured["5.2"]
-    text = R.as_markdown(frame)
+    text = R.as_markdown(frame, CR)
     assert text.startswith("## Reading alternatives (measured: legacy/src rebuilt")
     for entry_id, group in (("D116", "loop 50"), ("D117", "f2z(5)")):
         row = _row(measured, "5.2", entry_id, group)

@@ -19,7 +19,8 @@ from ...engines import run_printed
 from ...listing_lines import Statement
 from ...published_tables import PublishedTable
 from ...table_scene import TableScene
-from . import cognate_search, sums
+from . import cognate_search, readings, sums
+from .quantities import QUANTITIES
 
 KED_COLUMNS = ["input_deg", "rigid_x", "rigid_y", "src_dx", "src_dy", "src_xnew", "src_ynew",
                   "cog_dx", "cog_dy", "cog_xnew", "cog_ynew"]
@@ -169,6 +170,8 @@ ALI1977_TABLE1 = TableScene(
     sections=(sums_section,),
     notes=["The printed engine shows only what the listings WRITE (the deflections); the source "
            "listing stops before printing 360 deg."],
+    quantities=QUANTITIES["ali1977-table1"],
+    readings=readings,
 )
 
 ALI1977_TABLE2 = TableScene(
@@ -191,6 +194,8 @@ ALI1977_TABLE2 = TableScene(
     sections=(sums_section, cognate_section),
     notes=["Cognate columns: the Case II cognate listing with its missing page RECONSTRUCTED (D037); "
            "the printed engine cannot give them (the printed program never sets them)."],
+    quantities=QUANTITIES["ali1977-table2"],
+    readings=readings,
 )
 
 ALI1977_TABLE3 = TableScene(
@@ -213,6 +218,8 @@ ALI1977_TABLE3 = TableScene(
     sections=(sums_section, cognate_section),
     notes=["Cognate columns: a RECONSTRUCTION (no listing exists, D037), in src/ and in the port; "
            "it does not reproduce them."],
+    quantities=QUANTITIES["ali1977-table3"],
+    readings=readings,
 )
 
 TABLES = [ALI1977_TABLE1, ALI1977_TABLE2, ALI1977_TABLE3]

@@ -42,6 +42,7 @@ from ... import progress
 from ...csv_output import write_csv
 from ...published_tables import PublishedTable
 from ...readings import COMPILE_TIMEOUT_S, COMPILER, PRINTED_DIR, CompilerError
+from .table_forms import as_tables
 
 LEGACY_DIR = PRINTED_DIR.parent
 SRC = ("src/rahman1996_cssp_main.f", "src/rahman1996_subroutines.f", "src/imsl_qprog.f")
@@ -477,7 +478,6 @@ def parse(stdout: str) -> dict:
 
 def tables_of(run: dict) -> dict[str, pd.DataFrame]:
     """A run as Tables 5.1-5.7, by the legacy engine's own ``as_tables``."""
-    from .tables import as_tables
     return as_tables(run)
 
 

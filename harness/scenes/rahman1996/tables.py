@@ -20,10 +20,11 @@ from ....port.rahman1996.quirks import CSSP_CORRECTED, CSSP_PRINTED
 from ...engines import PrintedProgramError, run_program
 from ...listing_lines import Statement
 from ...table_scene import TableScene
+from . import readings
+from .quantities import QUANTITIES
+from .table_forms import INERTIA_COLUMNS, SERIES_COLUMNS, as_tables, inertia_frame, series_frame
 
 PROGRAM = "rahman1996_cssp_main"
-SERIES_COLUMNS = ["crank_deg", "before", "after"]
-INERTIA_COLUMNS = ["link", "quantity", "before", "after"]
 #: relative difference within the REAL*4 sensitivity measured in register D056
 REL_FLOOR = 1e-6
 
@@ -41,26 +42,6 @@ INPUTS = ("Section 5.2 and the listing's PARAMETERs: a1=2, a2=8, a4=1, s1=0.4 in
           "37 crank positions 0..360 deg. 'before' = the four equal point masses per link, 'after' "
           "= the QP solution (our QPROG stand-in, D050). port_corrected: every registered bug of "
           "the listing removed.")
-
-
-def series_frame(values: np.ndarray) -> pd.DataFrame:
-    """A 37 x 2 array (before, after) as a crank_deg, before, after table."""
-    return pd.DataFrame({"crank_deg": CRANK_DEG, "before": values[:, 0], "after": values[:, 1]})
-
-
-def inertia_frame(values: np.ndarray) -> pd.DataFrame:
-    """A 6 x 2 array (before, after) as Table 5.1 (link, quantity, before, after)."""
-    links, quantities = zip(*INERTIA_ROWS)
-    return pd.DataFrame({"link": links, "quantity": quantities,
-                         "before": values[:, 0], "after": values[:, 1]})
-
-
-def as_tables(run: dict) -> dict[str, pd.DataFrame]:
-    """A CSSP run (rahman1996.cssp() or port.cssp.balance(): ``table``, ``inertia``) as the seven tables."""
-    tables = {"5_1": inertia_frame(run["inertia"])}
-    for k, table in enumerate(dict.fromkeys(t for t, _ in CSSP_COLUMNS)):
-        tables[table] = series_frame(run["table"][:, 2 * k:2 * k + 2])
-    return tables
 
 
 @lru_cache(maxsize=1)
@@ -159,6 +140,8 @@ def _scene(table: str) -> TableScene:
         quirks=(CSSP_PRINTED, CSSP_CORRECTED),
         rel_floor=REL_FLOOR,
         floor_id="D056",
+        quantities=QUANTITIES[f"rahman1996-table{table}"],
+        readings=readings,
     )
 
 

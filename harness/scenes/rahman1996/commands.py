@@ -1,0 +1,20 @@
+"""Rahman (1996)'s own command: ``linkrepro arithmetic`` (the arithmetic study, arithmetic.py)."""
+from __future__ import annotations
+
+from pathlib import Path
+
+from ...command import Command
+from ...readings import CompilerError
+from .arithmetic import OUTPUTS, ReferenceFailed, write
+
+COMMANDS = [Command(
+    name="arithmetic",
+    help="rebuild the Rahman (1996) FORTRAN under the arithmetics of 1996 machines (needs gfortran; "
+         "about 20 s of CPU): which printed digits survive a change of compiler",
+    default_out=Path("out/arithmetic"),
+    out_help="output folder for arithmetic.md, arithmetic.csv, arithmetic_cells.csv "
+             "(default: out/arithmetic/, which reproduce's report links)",
+    outputs=OUTPUTS,
+    run=lambda args: write(args.out)[3],
+    failures=(CompilerError, ReferenceFailed),
+)]
