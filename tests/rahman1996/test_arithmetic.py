@@ -1,4 +1,5 @@
-"""harness/arithmetic.py: the legacy FORTRAN rebuilt under other arithmetics (register D056)."""
+"""The arithmetic study (harness/scenes/rahman1996/arithmetic*.py): the legacy FORTRAN rebuilt under
+other arithmetics (register D056)."""
 import re
 import shutil
 from dataclasses import replace
@@ -8,22 +9,24 @@ import pandas as pd
 import pytest
 
 from linkrepro.harness.scenes.rahman1996 import arithmetic as A
+from linkrepro.harness.scenes.rahman1996 import arithmetic_build as B
+from linkrepro.harness.scenes.rahman1996 import arithmetic_variants as V
 from linkrepro.harness.readings import CompilerError
 
 needs_gfortran = pytest.mark.skipif(shutil.which("gfortran") is None, reason="needs gfortran")
 
 #: the reference flags spelled differently: reordered, and x86-64's defaults written out
-RESPELLED = A.Variant("respelled", "control: the reference, spelled differently", True,
+RESPELLED = V.Variant("respelled", "control: the reference, spelled differently", True,
                       flags_base=("-O1", "-fallow-argument-mismatch", "-fno-fast-math", "-ffp-contract=off",
                                   "-fno-automatic", "-std=legacy", "-fno-unsafe-math-optimizations"))
-BROKEN = A.Variant("broken", "control: a flag gfortran does not know", True, ("-fno-such-arithmetic",))
+BROKEN = V.Variant("broken", "control: a flag gfortran does not know", True, ("-fno-such-arithmetic",))
 
 
 @pytest.fixture(scope="module")
 def measured():
     if shutil.which("gfortran") is None:
         pytest.skip("needs gfortran")
-    m = A.measure([A.get("reference"), RESPELLED, A.get("context-constants"), A.get("x87"), BROKEN])
+    m = B.measure([V.get("reference"), RESPELLED, V.get("context-constants"), V.get("x87"), BROKEN])
     cells = A.cell_frame(m)
     return m, cells, A.count_frame(m, cells)
 
@@ -32,7 +35,7 @@ def test_reference_flags_are_the_legacy_builds(root):
     """The reference variant is built as meson.build builds the legacy engine."""
     text = (root / "meson.build").read_text()
     block = re.search(r"fortran_legacy_args\s*=\s*\[(.*?)\]", text, re.S).group(1)
-    assert tuple(re.findall(r"'([^']*)'", block)) == A.REFERENCE_FLAGS
+    assert tuple(re.findall(r"'([^']*)'", block)) == V.REFERENCE_FLAGS
 
 
 @needs_gfortran
@@ -95,9 +98,9 @@ def test_a_variant_that_cannot_build_is_reported_not_fatal(measured):
 
 
 def test_a_missing_compiler_is_a_typed_error(monkeypatch, tmp_path):
-    monkeypatch.setattr(A, "COMPILER", "gfortran-that-is-not-there")
+    monkeypatch.setattr(B, "COMPILER", "gfortran-that-is-not-there")
     with pytest.raises(CompilerError, match="not on PATH"):
-        A.measure()
+        B.measure()
     from linkrepro.harness.cli import main
     assert main(["arithmetic", "--out", str(tmp_path / "a")]) == 1
     assert not (tmp_path / "a" / "arithmetic.csv").exists()
@@ -106,17 +109,17 @@ def test_a_missing_compiler_is_a_typed_error(monkeypatch, tmp_path):
 def test_a_reference_that_fails_is_a_typed_error(monkeypatch):
     if shutil.which("gfortran") is None:
         pytest.skip("needs gfortran")
-    with pytest.raises(A.ReferenceFailed, match="broken"):
-        A.measure([BROKEN])
+    with pytest.raises(B.ReferenceFailed, match="broken"):
+        B.measure([BROKEN])
 
 
 def _sources():
-    return {name.split("/")[-1]: (A.LEGACY_DIR / name).read_text() for name in A.SRC}
+    return {name.split("/")[-1]: (B.LEGACY_DIR / name).read_text() for name in B.SRC}
 
 
 def test_long_constants_touch_only_the_eight_digit_literals():
-    before, after = _sources(), A.long_constants_double(_sources())
-    changed = [(a, b) for a, b in zip(before[A.MAIN].split("\n"), after[A.MAIN].split("\n")) if a != b]
+    before, after = _sources(), V.long_constants_double(_sources())
+    changed = [(a, b) for a, b in zip(before[V.MAIN].split("\n"), after[V.MAIN].split("\n")) if a != b]
     assert {re.search(r"=(\S+)", b).group(1) for _, b in changed} == {"1.1636867D0", "2.3139072D0", "4.6210569D0"}
     assert after["rahman1996_subroutines.f"] == before["rahman1996_subroutines.f"]
 
@@ -127,7 +130,7 @@ def test_promotion_reads_fortran_not_text():
             "      IF (A.GT.0.3 .AND. I.EQ.1) Z=1.5E-3\n"
             "C     K=0.7 in a comment\n"
             "      WRITE(6,*) 'text 0.5'\n")
-    out = A._promote(text, lambda m, e, s: False).split("\n")
+    out = V._promote(text, lambda m, e, s: False).split("\n")
     assert out[0] == "      X=F(K1X)+0.1D0*Y"
     assert out[1] == "    1 FORMAT(3F20.5)"
     assert out[2] == "      IF (A.GT.0.3D0 .AND. I.EQ.1) Z=1.5D-3"
@@ -136,9 +139,9 @@ def test_promotion_reads_fortran_not_text():
 
 def test_a_transform_whose_text_is_gone_says_so():
     files = _sources()
-    files[A.MAIN] = files[A.MAIN].replace("      M1=1.9/G\n", "      M1=1.90/G\n")
+    files[V.MAIN] = files[V.MAIN].replace("      M1=1.9/G\n", "      M1=1.90/G\n")
     with pytest.raises(ValueError, match="M1=1.9/G"):
-        A.selected_real8(files)
+        V.selected_real8(files)
 
 
 def test_the_criterion_needs_every_table_and_documentation():
@@ -153,10 +156,10 @@ def test_the_criterion_needs_every_table_and_documentation():
 
 
 def test_every_variant_is_named_once_and_says_what_it_stands_for():
-    names = [v.name for v in A.VARIANTS]
+    names = [v.name for v in V.VARIANTS]
     assert names[0] == "reference" and len(names) == len(set(names))
-    assert all(v.machine for v in A.VARIANTS)
-    assert replace(A.get("O2"), extra=()).flags == A.REFERENCE_FLAGS
+    assert all(v.machine for v in V.VARIANTS)
+    assert replace(V.get("O2"), extra=()).flags == V.REFERENCE_FLAGS
 
 
 def test_reproduce_links_the_measurement_only_when_it_is_there(tmp_path):

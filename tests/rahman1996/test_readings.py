@@ -9,6 +9,8 @@ import numpy as np
 import pytest
 
 from linkrepro.harness.scenes.rahman1996 import arithmetic as A
+from linkrepro.harness.scenes.rahman1996 import arithmetic_build as B
+from linkrepro.harness.scenes.rahman1996 import arithmetic_variants as V
 from linkrepro.harness import readings as R
 from linkrepro.harness.scenes.rahman1996 import readings as CR
 from linkrepro.harness.register import REGISTER_PATH
@@ -174,7 +176,7 @@ def test_report_section(measured):
 @needs_gfortran
 def test_shared_objects_build_the_reference_bit_for_bit():
     from linkrepro.harness.scenes.rahman1996.tables import legacy_tables
-    m = A.measure([A.get("reference")], shared=("driver.f", "imsl_qprog.f", "rahman1996_subroutines.f"))
+    m = B.measure([V.get("reference")], shared=("driver.f", "imsl_qprog.f", "rahman1996_subroutines.f"))
     for table, frame in legacy_tables().items():
         for col in ("before", "after"):
             assert np.array_equal(m.values["reference"][table][col].to_numpy(), frame[col].to_numpy()), (table, col)

@@ -1,4 +1,4 @@
-"""Rahman (1996)'s own command: ``linkrepro arithmetic`` (the arithmetic study, arithmetic.py)."""
+"""Rahman (1996)'s own command: ``linkrepro arithmetic`` (the arithmetic study: arithmetic.py, its variants and its build)."""
 from __future__ import annotations
 
 from pathlib import Path

@@ -14,7 +14,8 @@ import pandas as pd
 
 from ... import readings as machine
 from ...readings import COMPILER, SRC_DIR, CompilerError, missing_message, put_back
-from . import arithmetic
+from . import arithmetic, arithmetic_build as build
+from .arithmetic_variants import Variant
 
 #: The 1996 program is measured on legacy/src (the printed main program WRITEs no table but
 #: Table 5.1's crank I_xx): a reading's ``chosen`` is an exact line of legacy/src/<file>.
@@ -36,7 +37,7 @@ def tables_of(program: str) -> tuple[str, ...]:
 
 def _cssp_sources() -> bool:
     """legacy/src's CSSP sources (and what the arithmetic study's build needs) are at hand."""
-    return all((arithmetic.LEGACY_DIR / path).is_file() for path in arithmetic.SRC + arithmetic.PRINTED)
+    return all((build.LEGACY_DIR / path).is_file() for path in build.SRC + build.PRINTED)
 
 
 def _cssp_readings() -> tuple[tuple[str, str, tuple[tuple[str, str, str, int], ...]], ...]:
@@ -58,14 +59,14 @@ def _cssp_readings() -> tuple[tuple[str, str, tuple[tuple[str, str, str, int], .
 @lru_cache(maxsize=4)
 def cssp_counts(readings: tuple) -> tuple[pd.DataFrame, dict[str, str], float]:
     """Build and run legacy/src as it is ("chosen") and once per reading with its scan text put
-    back (as ``_cssp_readings`` gives them; the builds side by side on the cores), by
-    arithmetic.py's driver and reference flags.  Returns (counts, failures, seconds): counts one
-    row per build, table (5.2-5.7) and column with the cells of crank 0-350 within ``CSSP_REL``
+    back (as ``_cssp_readings`` gives them; the builds side by side on the cores), by the
+    arithmetic study's driver and reference flags (arithmetic_build.py).  Returns (counts,
+    failures, seconds): counts one row per build, table (5.2-5.7) and column with the cells of crank 0-350 within ``CSSP_REL``
     of the published value and the largest change from the chosen build (relative); failures
     the builds that did not build or run (name: why).  Cached: the six scenes share one call.
     ``ValueError`` if a chosen line is not in legacy/src; ``CompilerError`` if the chosen build fails."""
     texts = {name: (SRC_DIR / name).read_text() for name in CSSP_FILES}
-    variants = [arithmetic.Variant("chosen", "legacy/src as it is: the readings as chosen", False)]
+    variants = [Variant("chosen", "legacy/src as it is: the readings as chosen", False)]
     for k, (entry, group, items) in enumerate(readings):
         edited = dict(texts)
         for file, chosen, scan, nth in items:
@@ -73,10 +74,10 @@ def cssp_counts(readings: tuple) -> tuple[pd.DataFrame, dict[str, str], float]:
 
         def with_reading(files: dict[str, str], edited=edited) -> dict[str, str]:
             return {**files, **edited}
-        variants.append(arithmetic.Variant(f"reading{k}", f"{entry} {group}".strip(), False, transform=with_reading))
+        variants.append(Variant(f"reading{k}", f"{entry} {group}".strip(), False, transform=with_reading))
     try:                                            # what no reading edits is compiled once
-        m = arithmetic.measure(variants, shared=("driver.f", "imsl_qprog.f", "rahman1996_subroutines.f"))
-    except arithmetic.ReferenceFailed as exc:       # legacy/src as it is builds with meson
+        m = build.measure(variants, shared=("driver.f", "imsl_qprog.f", "rahman1996_subroutines.f"))
+    except build.ReferenceFailed as exc:       # legacy/src as it is builds with meson
         raise CompilerError(f"{COMPILER} could not build legacy/src's CSSP as it is ({exc}); "
                             f"check the {COMPILER} installation") from exc
     cells = arithmetic.cell_frame(m)
@@ -136,7 +137,8 @@ def as_markdown(frame: pd.DataFrame) -> str:
              f"D061), within {rel} relative of the published value (the criterion of D116 and D117, "
              "D056's floor): legacy/src as it is (the chosen readings) and with each reading's lines put back "
              "as the scan prints them (where that does not compile, as the other grouping the scan admits: see "
-             "the entry), built with the legacy engine's flags and run by harness/arithmetic.py's driver. "
+             "the entry), built with the legacy engine's flags and run by the arithmetic study's driver "
+             "(harness/scenes/rahman1996/arithmetic_build.py). "
              f"{frame.attrs.get('builds', len(frame) + 1)} gfortran builds shared by the six table scenes, "
              f"{frame.attrs.get('seconds', float('nan')):.1f} s. Re-measure: "
              f"`python -c \"from linkrepro.harness.scenes.rahman1996 import readings; print(readings.measure('{table}'))\"`.", "",
