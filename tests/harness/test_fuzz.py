@@ -7,7 +7,8 @@ PATIENCE seconds (the first call in a worker may compile kernels, slowly on a lo
 short deadline."""
 import pytest
 
-from linkrepro.harness import fuzz
+from linkrepro.harness import fuzz, fuzz_runner
+from linkrepro.harness.fuzz_calls import Job
 from tests.patience import CHILD_SECONDS as PATIENCE
 
 #: call texts whose outcome the runner must report, and that outcome
@@ -28,7 +29,7 @@ KNOWN = [
 
 
 def test_runner_classifies_known_outcomes():
-    jobs = [fuzz.Job(i, "known", text, angles=angles, timeout=3.0 if outcome == "hang" else None)
+    jobs = [Job(i, "known", text, angles=angles, timeout=3.0 if outcome == "hang" else None)
             for i, (text, angles, outcome) in enumerate(KNOWN)]
     results = fuzz.run(jobs, timeout=PATIENCE, workers=2)
     assert [r["outcome"] for r in results] == [outcome for _, _, outcome in KNOWN]
@@ -54,7 +55,8 @@ def test_checks_flag_results_that_break_their_promise():
     coupler point are findings ('violated'), not 'ok'."""
     import numpy as np
     from linkrepro.port.ali1977.quirks import CORRECTED, PRINTED
-    qp = fuzz.CHECKS["qp"]
+    checks = fuzz.context().checks
+    qp = checks["qp"]
     missed = {"sol": np.ones(2), "diag": 0.0}
     assert "inequality" in qp(([np.eye(2), -np.ones(2)], {"a": [[1.0, 1.0]], "b": [3.0]}), missed)
     assert qp(([np.eye(2), -np.ones(2)], {"a": [[1.0, 1.0]], "b": [3.0]}), {"sol": np.full(2, 1.5), "diag": 0.0}) is None
@@ -62,8 +64,8 @@ def test_checks_flag_results_that_break_their_promise():
     near = {"sol": np.array([1.5, 1.5 - 3e-13]), "diag": 0.0}           # within 1e3 eps, not 1e-15 short
     assert qp(([np.eye(2), -np.ones(2)], {"a": [[1.0, 1.0]], "b": [3.0]}), near) is None
     apart = {"xp": np.array([1.0]), "yp": np.array([2.0]), "cxp": np.array([1.5]), "cyp": np.array([2.0])}
-    assert "off the source's" in fuzz.CHECKS["cognate"](([], {"quirks": CORRECTED}), apart)
-    assert fuzz.CHECKS["cognate"](([], {"quirks": PRINTED}), apart) is None     # the listing's D141 may do that
+    assert "off the source's" in checks["cognate"](([], {"quirks": CORRECTED}), apart)
+    assert checks["cognate"](([], {"quirks": PRINTED}), apart) is None     # the listing's D141 may do that
     ns = fuzz.namespace()
-    assert fuzz.arguments_of("port.ali1977.case2.case2_cognate(np.array([1.0]), quirks=port.ali1977.case2.LISTING)",
+    assert fuzz_runner.arguments_of("port.ali1977.case2.case2_cognate(np.array([1.0]), quirks=port.ali1977.case2.LISTING)",
                              ns)[1]["quirks"] is ns["port"].ali1977.case2.LISTING
