@@ -1,8 +1,8 @@
 """The four engines the harness runs for every scene.
 
 ``printed``         the listings exactly as printed (legacy/printed), built as the
-                    standalone programs they are; run as subprocesses, their WRITE
-                    output parsed.  They only give what they print.
+                    standalone programs they are; run as subprocesses (``run_program``),
+                    their WRITE output parsed by each thesis.  They only give what they print.
 ``legacy``          the cleaned listings (legacy/src) through f2py.
 ``port_printed``    the Python port with every quirk of the original on.
 ``port_corrected``  the Python port with every registered bug removed.
@@ -12,8 +12,6 @@ from __future__ import annotations
 import os
 import subprocess
 from pathlib import Path
-
-import pandas as pd
 
 ENGINES = ("printed", "legacy", "port_printed", "port_corrected")
 
@@ -66,30 +64,3 @@ def run_program(program: str, cwd: Path | None = None, timeout_s: float = 60.0) 
         detail = " | ".join(line.strip() for line in done.stderr.splitlines() if line.strip())
         raise PrintedProgramError(f"printed program {program!r} {status} ({exe})" + (f": {detail}" if detail else ""))
     return done.stdout
-
-
-def run_printed(program: str, timeout_s: float = 60.0) -> pd.DataFrame:
-    """Run one Ali (1977) printed program; return the path point's rows (deg, dx, dy, rot).
-
-    Cases I and II WRITE with FORMAT 200, (1H0,5X,F12.6,8X,F12.6,8X,F12.6,8X,F12.6):
-    a carriage-control '0' then four numbers.  Case III's FORMAT 500 starts a page
-    ('1') per angle with the angle and the tip's three values, then the other nodes.
-    """
-    frame = parse_printed_output(run_program(program, timeout_s=timeout_s))
-    if frame.empty:
-        raise PrintedProgramError(f"{program} printed no result line")
-    return frame
-
-
-def parse_printed_output(text: str) -> pd.DataFrame:
-    """The path point's rows (deg, dx, dy, rot) of a printed program's output."""
-    rows = []
-    for line in text.splitlines():
-        fields = line[1:].split()
-        if line[:1] not in "01" or len(fields) != 4:
-            continue                       # page headers; Case III's lines for nodes 2-5
-        try:
-            rows.append([float(v) for v in fields])
-        except ValueError:
-            continue                       # the 1H1 column-heading line
-    return pd.DataFrame(rows, columns=["deg", "dx", "dy", "rot"])

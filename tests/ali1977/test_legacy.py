@@ -7,7 +7,7 @@ import pytest
 
 from linkrepro import AssemblyError, LinkageError
 from linkrepro.legacy import ali1977
-from linkrepro.harness.engines import run_printed
+from linkrepro.harness.scenes.ali1977.printed_output import run_printed
 from linkrepro.harness.published_tables import PublishedTable
 from tests.patience import CHILD_SECONDS
 

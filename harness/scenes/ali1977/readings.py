@@ -14,7 +14,7 @@ from pathlib import Path
 
 import pandas as pd
 
-from ...engines import parse_printed_output
+from .printed_output import parse_printed_output
 from ...published_tables import PublishedTable
 from ...readings import (COMPILE_TIMEOUT_S, COMPILER, FLAGS, PRINTED_DIR, SRC_DIR, CompilerError, first_error, groups,
                          missing_message, put_back)

@@ -15,7 +15,7 @@ from ....port.ali1977.case3 import COGNATE_LISTING as CASE3_COGNATE
 from ....port.ali1977.case3 import LISTING as CASE3_LISTING
 from ....port.ali1977.case3 import case3_cognate, case3_source
 from ...csv_output import write_csv
-from ...engines import run_printed
+from .printed_output import run_printed
 from ...listing_lines import Statement
 from ...published_tables import PublishedTable
 from ...table_scene import TableScene
