@@ -125,11 +125,16 @@ def _under(exc: OSError, folder: Path) -> bool:
 
 
 def _summary(done: list, out_dir: Path) -> None:
-    from .run import unexplained_count
+    """Each table's cells per engine (``diff.count_cells``), then the last line: the report and
+    the cells of every table and engine (matched, explained, unresolved, unexplained, not produced)."""
+    from .diff import headline
+    from .run import cell_totals
     for item in done:
         if item.counts is not None:
-            _out(f"{item.scene}:\n{item.counts.to_string()}")
-    _out(f"report: {out_dir / 'report.md'}  ({unexplained_count(done)} unexplained cells)")
+            _out(f"{item.scene}:")
+            for engine, row in item.counts.iterrows():
+                _out(f"  {engine}: {headline(row, by_kind=True)}")
+    _out(f"report: {out_dir / 'report.md'}  ({headline(cell_totals(done))})")
 
 
 def _reproduce(args: argparse.Namespace, parser: _Parser) -> int:

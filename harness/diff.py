@@ -8,6 +8,11 @@ A cell's status, per engine:
                   WRITE some quantities).
 For ``port_corrected`` a cell is also registered to each quirk whose switching
 alone (from PRINTED) moves that cell beyond its half unit: measured, per cell.
+
+A ``registered`` cell is not always explained: an entry of kind ``unresolved`` records that
+we do not know.  ``count_cells`` is the one count every report shows (each scene's report.md,
+the run's report.md, report.html's overview, the last line of ``linkrepro reproduce``): per
+engine, matched / explained (by kind) / unresolved / unexplained / not-produced.
 """
 from __future__ import annotations
 
@@ -18,7 +23,7 @@ import numpy as np
 import pandas as pd
 
 from .published_tables import PublishedTable
-from .register import Deviation, by_quirk
+from .register import KINDS, Deviation, by_quirk
 
 if TYPE_CHECKING:
     from .table_scene import TableScene
@@ -95,10 +100,87 @@ def diff_scene(scene: TableScene, published: PublishedTable, results: dict[str, 
     return pd.DataFrame(rows)
 
 
-def summary(diff: pd.DataFrame) -> pd.DataFrame:
-    """Counts of each status per engine."""
-    counts = diff.groupby(["engine", "status"]).size().unstack(fill_value=0)
-    return counts.reindex(columns=list(STATUSES), fill_value=0)
+#: what a cell counts as (``classify_cells``, ``count_cells``)
+CLASSES = ("matched", "explained", "unresolved", "unexplained", "not-produced")
+#: the kinds an explained cell is counted under: every kind but ``unresolved``, and SEVERAL
+SEVERAL = "several kinds"
+EXPLAINED_BY = tuple(k for k in KINDS if k != "unresolved") + (SEVERAL,)
+#: the columns of ``count_cells``: the total, then the classes with ``explained`` split by kind
+COUNT_COLUMNS = ("cells", "matched", "explained", *EXPLAINED_BY, "unresolved", "unexplained", "not-produced")
+
+
+def classify_cells(diff: pd.DataFrame, register: dict[str, Deviation]) -> pd.DataFrame:
+    """What each row of a diff (``diff_scene``, or a diff.csv read back) counts as: a frame on
+    the diff's index with ``count`` (one of CLASSES) and ``kind`` (for an explained cell, the
+    kind of the entries that explain it, or SEVERAL; else "").
+
+    - ``match`` -> matched; ``not-produced`` -> not-produced (whatever ids it carries);
+      ``unexplained`` -> unexplained.
+    - ``registered``: the kinds of the register entries its ids name (ids that name no entry
+      of ``register`` are ignored: they explain nothing).  Entries of any kind but
+      ``unresolved`` -> explained, under that kind, or under SEVERAL when they are of more than
+      one kind (counted once, never under each; which kinds is in the cell's register ids).
+      A cell named by an ``unresolved`` entry AND a real explanation is explained: the
+      unresolved entry is ignored.  Only ``unresolved`` entries -> unresolved: we do not know.
+      No entry at all (every id missing from the register) -> unexplained.
+    An unresolved cell is never counted as explained or matched."""
+    if diff.empty:                            # no engine ran: no rows, and maybe no columns
+        return pd.DataFrame({"count": pd.Series(dtype=str), "kind": pd.Series(dtype=str)}, index=diff.index)
+    ids = diff["register_ids"].fillna("").astype(str) if "register_ids" in diff else pd.Series("", index=diff.index)
+    count, kind = [], []
+    for status, names in zip(diff["status"], ids):
+        if status == "match":
+            count.append("matched"), kind.append("")
+        elif status in ("not-produced", "unexplained"):
+            count.append(status), kind.append("")
+        elif status == "registered":
+            kinds = {register[i].kind for i in names.split() if i in register}
+            real = sorted(kinds - {"unresolved"})
+            if real:
+                count.append("explained"), kind.append(real[0] if len(real) == 1 else SEVERAL)
+            else:
+                count.append("unresolved" if kinds else "unexplained"), kind.append("")
+        else:
+            raise ValueError(f"unknown cell status {status!r}")
+    return pd.DataFrame({"count": count, "kind": kind}, index=diff.index)
+
+
+def count_cells(diff: pd.DataFrame, register: dict[str, Deviation]) -> pd.DataFrame:
+    """Per engine (rows, in the diff's order), the cells of a scene's diff by what they count as
+    (``classify_cells``): columns COUNT_COLUMNS, integers.  ``cells`` = matched + explained +
+    unresolved + unexplained + not-produced, and ``explained`` = the sum of its kinds
+    (EXPLAINED_BY: a cell explained by entries of several kinds counts once, under SEVERAL)."""
+    classes = classify_cells(diff, register)
+    engines = diff["engine"] if not diff.empty else pd.Series(dtype=str)
+    frame = pd.DataFrame(0, index=pd.Index(list(dict.fromkeys(engines)), name="engine"),
+                         columns=list(COUNT_COLUMNS), dtype=int)
+    for engine, count, kind in zip(engines, classes["count"], classes["kind"]):
+        frame.at[engine, "cells"] += 1
+        frame.at[engine, count] += 1
+        if kind:
+            frame.at[engine, kind] += 1
+    assert (frame["cells"] == frame[list(CLASSES)].sum(axis=1)).all()
+    assert (frame["explained"] == frame[list(EXPLAINED_BY)].sum(axis=1)).all()
+    return frame
+
+
+def total_counts(counts: list[pd.DataFrame]) -> pd.Series:
+    """``count_cells`` frames (scenes) added up over every engine: one count per COUNT_COLUMNS."""
+    total = pd.Series(0, index=list(COUNT_COLUMNS), dtype=int)
+    for frame in counts:
+        total += frame[list(COUNT_COLUMNS)].sum(axis=0).astype(int)
+    return total
+
+
+def headline(total: pd.Series, by_kind: bool = False) -> str:
+    """The counts in words (``total_counts``, or one engine's row of ``count_cells``): 'N cells:
+    a matched, b explained, c unresolved, d unexplained, e not produced'; the five add up to N.
+    ``by_kind``: the explained cells' kinds that count any, after b ('b explained (KIND k, ...)')."""
+    kinds = ", ".join(f"{k} {total[k]}" for k in EXPLAINED_BY if total[k])
+    explained = f"{total['explained']} explained" + (f" ({kinds})" if by_kind and kinds else "")
+    return (f"{total['cells']} cells: {total['matched']} matched, {explained}, "
+            f"{total['unresolved']} unresolved, {total['unexplained']} unexplained, "
+            f"{total['not-produced']} not produced")
 
 
 def column_max(diff: pd.DataFrame, what: str = "abs_diff") -> pd.DataFrame:

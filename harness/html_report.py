@@ -1,10 +1,12 @@
 """``out/report.html``: the run's report as one self-contained page (inline style, script and
 figures; nothing fetched when it is viewed), rendered with Jinja2 from ``templates/report.html.j2``.
 
-Per table scene: the published table in its printed layout, each cell coloured by its status for
-the engine chosen in the page's selector, with the digits it agrees to; a click (or Enter) on a
+Per table scene: the published table in its printed layout, each cell coloured by what it counts as
+for the engine chosen in the page's selector (``diff.classify_cells``: match, explained, unresolved,
+unexplained, not-produced), with the digits it agrees to; a click (or Enter) on a
 cell opens its trail (``harness/trail.py``): every engine's value, the register entries, the
-listing lines.  Then the scene's figures, and an overview of every table and engine.
+listing lines.  Then the scene's figures, and an overview of every table and engine
+(``diff.count_cells``, the counts every report shows).
 """
 from __future__ import annotations
 
@@ -17,10 +19,10 @@ import jinja2
 import pandas as pd
 
 from . import listing_lines, register as register_mod
-from .diff import STATUSES, summary
+from .diff import CLASSES, COUNT_COLUMNS, classify_cells, count_cells, headline, total_counts
 from .engines import ENGINES
-from .register import KINDS, Deviation
-from .report import registered_by_kind
+from .register import Deviation
+from .report import heading
 from .scene import Outcome
 from .scenes import SCENES, TABLES
 from .trail import printed_digits, published_source, read_diff
@@ -28,6 +30,10 @@ from .trail import printed_digits, published_source, read_diff
 TEMPLATES = Path(__file__).resolve().parent / "templates"
 #: tagged src edits shown per register entry (the rest are counted)
 EDITS_SHOWN = 8
+#: what a cell is coloured as: ``diff.classify_cells``'s class, a matched cell shown as ``match``
+#: (its status in diff.csv); diff.csv's ``registered`` split into explained and unresolved
+SHOWN = {"matched": "match"}
+CELL_STATUSES = tuple(SHOWN.get(c, c) for c in CLASSES)
 
 
 def data_uri(path: Path) -> str:
@@ -52,10 +58,13 @@ def _number(value: float) -> str | None:
     return None if math.isnan(value) else f"{value:.9g}"
 
 
-def table_view(scene, diff: pd.DataFrame, blocks: dict, cells: dict) -> dict:
-    """The published table as printed (rows, columns, the cells' statuses per engine) for the
-    template; each cell's trail data goes into ``cells`` and its listing lines into ``blocks``."""
+def table_view(scene, diff: pd.DataFrame, register: dict[str, Deviation], blocks: dict, cells: dict) -> dict:
+    """The published table as printed (rows, columns, what each cell counts as per engine:
+    CELL_STATUSES) for the template; each cell's trail data goes into ``cells`` and its listing
+    lines into ``blocks``."""
     key = scene.key_name
+    classes = classify_cells(diff, register)
+    diff = diff.assign(shown=classes["count"].map(lambda c: SHOWN.get(c, c)), kind=classes["kind"])
     rows = []
     for row_key in dict.fromkeys(diff[key].astype(str)):
         row = diff[diff[key].astype(str) == row_key]
@@ -68,7 +77,7 @@ def table_view(scene, diff: pd.DataFrame, blocks: dict, cells: dict) -> dict:
             engines = {}
             for r in here.itertuples(index=False):
                 ids = r.register_ids if isinstance(r.register_ids, str) else ""
-                engines[r.engine] = {"status": r.status, "value": _number(float(r.value)),
+                engines[r.engine] = {"status": r.shown, "kind": r.kind, "value": _number(float(r.value)),
                                      "difference": _number(float(r.abs_diff)),
                                      "digits": None if math.isnan(r.digits) else min(float(r.digits), 99.0),
                                      "ids": ids.split()}
@@ -87,15 +96,10 @@ def table_view(scene, diff: pd.DataFrame, blocks: dict, cells: dict) -> dict:
             "source": published_source(scene.table)}
 
 
-def overview(diff: pd.DataFrame, register: dict[str, Deviation]) -> list[dict]:
-    """Per engine: cells by status (``diff.summary``) and registered cells by the kind of entry
-    (``report.registered_by_kind``: a cell explained by entries of several kinds counts under each)."""
-    counts = summary(diff)
-    kinds = registered_by_kind(diff.fillna({"register_ids": ""}), register).reindex(
-        index=counts.index, columns=list(KINDS), fill_value=0)
-    return [{"engine": engine, "cells": int(counts.loc[engine].sum()),
-             **{s: int(counts.at[engine, s]) for s in STATUSES},
-             "kinds": {k: int(kinds.at[engine, k]) for k in KINDS}}
+def overview(counts: pd.DataFrame) -> list[dict]:
+    """A scene's ``diff.count_cells`` (cells; matched, explained by kind, unresolved,
+    unexplained, not-produced) as the overview's rows, the engines in their order."""
+    return [{"engine": engine, **{c: int(counts.at[engine, c]) for c in counts.columns}}
             for engine in ENGINES if engine in counts.index]
 
 
@@ -109,22 +113,24 @@ def render(out_dir: Path, done: list[Outcome], bench_dir: Path | None = None) ->
     register = register_mod.load()
     blocks: dict[tuple, str] = {}
     cells: dict[str, dict] = {}
-    scenes, used = [], set()
+    scenes, used, counted = [], set(), []
     for item in done:
         scene, folder = SCENES[item.scene], out_dir / item.scene
         view = {"name": item.scene, "title": item.title, "seconds": item.seconds, "failures": item.failures,
                 "overview": item.overview, "figures": figures(folder) if folder.is_dir() else [], "table": None}
         if item.scene in TABLES and (folder / "diff.csv").is_file():
             diff = read_diff(TABLES[item.scene], out_dir)
-            view["table"] = table_view(scene, diff, blocks, cells)
-            view["counts"] = overview(diff, register)
+            view["table"] = table_view(scene, diff, register, blocks, cells)
+            counted.append(count_cells(diff, register))
+            view["counts"] = overview(counted[-1])
             used |= {i for ids in diff["register_ids"].fillna("") for i in str(ids).split()}
         scenes.append(view)
     bench = figures(bench_dir) if bench_dir is not None and bench_dir.is_dir() else []
     env = jinja2.Environment(loader=jinja2.FileSystemLoader(TEMPLATES), autoescape=True,
                              undefined=jinja2.StrictUndefined, trim_blocks=True, lstrip_blocks=True)
     return env.get_template("report.html.j2").render(
-        scenes=scenes, engines=ENGINES, statuses=STATUSES, kinds=KINDS,
+        scenes=scenes, engines=ENGINES, statuses=CELL_STATUSES,
+        columns=[(c, heading(c)) for c in COUNT_COLUMNS], total=headline(total_counts(counted)),
         entries=[_entry(register[i]) for i in sorted(used) if i in register],
         blocks={block: [_line(line) for line in lines] for lines, block in blocks.items()},
         cells_json=json.dumps(cells, separators=(",", ":")).replace("</", "<\\/"),

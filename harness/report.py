@@ -11,7 +11,7 @@ from pathlib import Path
 import pandas as pd
 from matplotlib.figure import Figure
 
-from .diff import column_max, summary
+from .diff import EXPLAINED_BY, classify_cells, column_max, count_cells
 from .register import Deviation
 
 STYLE = {"published": dict(marker="o", ls="none", color="k", ms=4),
@@ -106,16 +106,24 @@ def draw_all(draw, jobs: list[tuple]) -> list:
         pool.shutdown(cancel_futures=True)
 
 
-def registered_by_kind(diff: pd.DataFrame, register: dict[str, Deviation]) -> pd.DataFrame:
-    """Per engine, how many registered cells each kind of entry explains."""
-    rows = []
-    for engine, ids in diff.loc[diff["status"] == "registered", ["engine", "register_ids"]].itertuples(index=False):
-        for kind in {register[i].kind for i in ids.split() if i in register}:
-            rows.append((engine, kind))
-    if not rows:
-        return pd.DataFrame(index=pd.Index([], name="engine"))
-    frame = pd.DataFrame(rows, columns=["engine", "kind"])
-    return frame.groupby(["engine", "kind"]).size().unstack(fill_value=0)
+def heading(column: str) -> str:
+    """A column of ``diff.count_cells`` as every report heads it: a kind as 'explained: KIND'."""
+    return f"explained: {column}" if column in EXPLAINED_BY else column
+
+
+def counts_table(counts: pd.DataFrame) -> pd.DataFrame:
+    """``diff.count_cells`` for a markdown table: every column headed by ``heading``, the kinds
+    of ``explained`` that explain no cell of the table left out (their counts are all 0)."""
+    shown = [c for c in counts.columns if c not in EXPLAINED_BY or counts[c].any()]
+    return counts[shown].rename(columns=heading)
+
+
+COUNTS_WORDS = ("A cell is *matched* when it is within half a unit of the printed last digit. Any other "
+                "produced cell is *explained* when a register entry of a kind other than `unresolved` names "
+                "it (counted once, under that kind, or under `several kinds` when its entries are of more "
+                "than one), *unresolved* when only `unresolved` entries name it (we do not know why it "
+                "differs), else *unexplained*; *not-produced*: the engine does not give it. diff.csv's "
+                "status `registered` covers both explained and unresolved cells.")
 
 
 def render_entry(entry: Deviation) -> str:
@@ -129,18 +137,15 @@ def render_entry(entry: Deviation) -> str:
 
 def scene_report(scene, diff: pd.DataFrame, timings: dict[str, float], register: dict[str, Deviation],
                  plots: list[Path], extra: str = "") -> str:
-    counts = summary(diff)
+    counts = count_cells(diff, register)
     ids = sorted({i for s in diff["register_ids"] for i in s.split()})
-    unexplained = diff[diff["status"] == "unexplained"]
+    unexplained = diff[classify_cells(diff, register)["count"] == "unexplained"]
     out = [f"# {scene.title}", "", f"Scene `{scene.name}`; published table `harness/published/{scene.table}.csv`.",
            "", f"**Inputs.** {scene.inputs}", ""]
     out += [f"- {n}" for n in scene.notes]
     out += ["", "## Cells against the published table",
-            "", "A cell matches when it is within half a unit of the printed last digit.", "",
-            markdown_table(counts, "{}"), "",
-            "Registered cells by the kind of entry that explains them (a cell explained by "
-            "entries of several kinds counts under each):", "",
-            markdown_table(registered_by_kind(diff, register), "{}"), "",
+            "", COUNTS_WORDS + " Kinds that explain no cell of this table are left out.", "",
+            markdown_table(counts_table(counts), "{}"), "",
             "## Largest |engine - published| per column (over produced cells)", "",
             markdown_table(column_max(diff, "abs_diff")), "",
             "## Largest |engine - legacy| per column", "",

@@ -13,6 +13,8 @@ from queue import Empty
 import pandas as pd
 
 from . import html_report, progress, readings
+from .diff import headline, total_counts
+from .report import COUNTS_WORDS
 from .scene import Outcome, RunOptions
 from .scenes import SCENES, TABLES, get, report_links
 
@@ -170,9 +172,10 @@ def reproduce(names: list[str] | None, out_dir: Path, measure_readings: bool = T
     done = [results[name] for name in names]
     failures = [f"{item.scene}: {failure}" for item in done for failure in item.failures]
     lines = ["# linkrepro: reproduction report", "",
-             "Each published cell, for each engine: `match` (within half a unit of the printed last "
-             "digit), `registered` (explained in harness/deviations.toml), `unexplained`, or "
-             "`not-produced` (the engine does not give it).", ""]
+             f"The published cells of every table below, once per engine: "
+             f"{headline(cell_totals(done), by_kind=True)}.", "",
+             "Each published cell is counted once per engine. " + COUNTS_WORDS + " The register is "
+             "harness/deviations.toml.", ""]
     for item in done:
         lines += [f"## [{item.scene}]({item.scene}/report.md)", "", item.title, "", *item.overview, "",
                   f"Wall time {item.seconds:.2f} s.", ""]
@@ -188,6 +191,7 @@ def reproduce(names: list[str] | None, out_dir: Path, measure_readings: bool = T
     return done
 
 
-def unexplained_count(done: list[Outcome]) -> int:
-    return int(sum(item.counts.get("unexplained", pd.Series(dtype=int)).sum()
-                   for item in done if item.counts is not None))
+def cell_totals(done: list[Outcome]) -> pd.Series:
+    """Every table scene's cells over every engine, by what they count as (``diff.count_cells``
+    added up by ``diff.total_counts``): the numbers of the run report's and the CLI's headline."""
+    return total_counts([item.counts for item in done if item.counts is not None])

@@ -39,7 +39,7 @@ class RunOptions:
 @dataclass
 class Outcome:
     """What a scene's run gives the run's report: markdown lines under its heading, its wall
-    time (s), the cells per engine and status (table scenes), what could not run."""
+    time (s), the cells per engine (table scenes: ``diff.count_cells``), what could not run."""
     scene: str
     title: str
     overview: list[str]

@@ -12,12 +12,12 @@ import pandas as pd
 
 from . import readings, register as register_mod
 from .csv_output import write_csv
-from .diff import diff_scene, summary
+from .diff import count_cells, diff_scene
 from .engines import ENGINES, PrintedProgramError
 from .listing_lines import Statement
 from .published_tables import PublishedTable
 from .quantities import DIFF, Quantity
-from .report import plot_scene, scene_report
+from .report import counts_table, plot_scene, scene_report
 from .scene import Outcome, RunOptions
 
 
@@ -120,7 +120,7 @@ class TableScene:
                                 if options.measure_readings else
                                 "## Reading alternatives\n\nNot measured (skipped on request: --skip-readings).")
         (target / "report.md").write_text(scene_report(self, diff, timings, register, plots, extra))
-        counts = summary(diff)
+        counts = count_cells(diff, register)
         return Outcome(self.name, self.title, counts_overview(counts, timings), time.perf_counter() - begin,
                        counts=counts, failures=failures)
 
@@ -137,9 +137,11 @@ class Computed:
 
 
 def counts_overview(counts: pd.DataFrame, timings: dict[str, float]) -> list[str]:
-    """The run report's table: cells per engine and status, and each engine's seconds."""
-    lines = ["| engine | " + " | ".join(counts.columns) + " | seconds |",
-             "|---|" + "---|" * (len(counts.columns) + 1)]
-    for engine, row in counts.iterrows():
+    """The run report's table: cells per engine (``diff.count_cells``, headed as in the scene's
+    report), and each engine's seconds."""
+    shown = counts_table(counts)
+    lines = ["| engine | " + " | ".join(shown.columns) + " | seconds |",
+             "|---|" + "---|" * (len(shown.columns) + 1)]
+    for engine, row in shown.iterrows():
         lines.append(f"| {engine} | " + " | ".join(str(v) for v in row) + f" | {timings.get(engine, float('nan')):.4f} |")
     return lines

@@ -1,0 +1,257 @@
+"""The one count every report shows (``harness/diff.py``: ``classify_cells``, ``count_cells``,
+``total_counts``, ``headline``): first on a made-up diff with known answers, then on a fresh run of
+Table III (readings skipped; it has unresolved cells): the numbers in the run's report.md, the
+scene's report.md, report.html's overview and cell colours, and the CLI's lines are those of
+``count_cells`` on the diff.csv the run wrote, and they add up.
+"""
+from __future__ import annotations
+
+import contextlib
+import io
+import re
+from html.parser import HTMLParser
+from pathlib import Path
+
+import pandas as pd
+import pytest
+
+from linkrepro.harness import register as register_mod
+from linkrepro.harness.cli import main
+from linkrepro.harness.diff import (CLASSES, COUNT_COLUMNS, EXPLAINED_BY, SEVERAL, classify_cells, count_cells,
+                                    headline, total_counts)
+from linkrepro.harness.register import Deviation
+
+SCENE = "ali1977-table3"
+
+
+def _entry(id_: str, kind: str) -> Deviation:
+    return Deviation(id=id_, kind=kind, title="t", where="w", printed="p", meant="m", evidence="e", effect="f")
+
+
+REGISTER = {e.id: e for e in (_entry("U1", "unresolved"), _entry("U2", "unresolved"), _entry("B1", "original-bug"),
+                              _entry("M1", "published-misprint"), _entry("P1", "portability"))}
+
+#: (engine, status, register ids) -> what it must count as, and the kind of an explained cell
+CELLS = [
+    ("legacy", "match", None, "matched", ""),
+    ("legacy", "registered", "U1", "unresolved", ""),                 # only an unresolved entry
+    ("legacy", "registered", "U1 U2", "unresolved", ""),              # two, both unresolved
+    ("legacy", "registered", "B1 U1", "explained", "original-bug"),   # unresolved and a real one
+    ("legacy", "registered", "X9", "unexplained", ""),                # an id the register lacks
+    ("legacy", "registered", "U1 X9", "unresolved", ""),              # the missing id is ignored
+    ("legacy", "registered", "P1 X9", "explained", "portability"),
+    ("legacy", "registered", "B1 M1", "explained", SEVERAL),          # two real kinds: once
+    ("legacy", "registered", "B1 M1 U1", "explained", SEVERAL),
+    ("legacy", "unexplained", "", "unexplained", ""),
+    ("legacy", "not-produced", "B1", "not-produced", ""),             # not produced, whatever its ids
+    ("printed", "not-produced", None, "not-produced", ""),
+    ("printed", "registered", "M1", "explained", "published-misprint"),
+    ("printed", "registered", "M1 M1", "explained", "published-misprint"),
+    ("printed", "match", "", "matched", ""),
+]
+
+
+def made_up_diff() -> pd.DataFrame:
+    return pd.DataFrame([{"engine": e, "status": s, "register_ids": ids} for e, s, ids, _, _ in CELLS])
+
+
+def test_classify_cells_on_a_made_up_diff():
+    classes = classify_cells(made_up_diff(), REGISTER)
+    assert list(classes["count"]) == [c[3] for c in CELLS]
+    assert list(classes["kind"]) == [c[4] for c in CELLS]
+
+
+def test_count_cells_on_a_made_up_diff():
+    counts = count_cells(made_up_diff(), REGISTER)
+    assert list(counts.index) == ["legacy", "printed"] and list(counts.columns) == list(COUNT_COLUMNS)
+    legacy = {"cells": 11, "matched": 1, "explained": 4, "original-bug": 1, "portability": 1, SEVERAL: 2,
+              "unresolved": 3, "unexplained": 2, "not-produced": 1}
+    printed = {"cells": 4, "matched": 1, "explained": 2, "published-misprint": 2, "not-produced": 1}
+    for engine, expected in (("legacy", legacy), ("printed", printed)):
+        assert counts.loc[engine].to_dict() == {c: expected.get(c, 0) for c in COUNT_COLUMNS}, engine
+    total = total_counts([counts, counts.loc[["printed"]]])
+    assert total["cells"] == 19 and total["explained"] == 8 and total["unresolved"] == 3
+    assert total["published-misprint"] == 4 and total["unexplained"] == 2 and total["not-produced"] == 3
+    assert headline(counts.loc["legacy"]) == ("11 cells: 1 matched, 4 explained, 3 unresolved, 2 unexplained, "
+                                              "1 not produced")
+    assert headline(counts.loc["legacy"], by_kind=True) == (
+        "11 cells: 1 matched, 4 explained (original-bug 1, portability 1, several kinds 2), 3 unresolved, "
+        "2 unexplained, 1 not produced")
+
+
+def test_an_unresolved_entry_never_explains():
+    """Every cell named only by unresolved entries counts as unresolved, with no kind of explained."""
+    diff = pd.DataFrame({"engine": ["a"] * 3, "status": ["registered"] * 3, "register_ids": ["U1", "U2", "U1 U2"]})
+    counts = count_cells(diff, REGISTER).loc["a"]
+    assert counts["unresolved"] == 3 and counts["explained"] == 0 and counts[list(EXPLAINED_BY)].sum() == 0
+
+
+def test_no_engine_ran_counts_nothing():
+    counts = count_cells(pd.DataFrame([]), REGISTER)
+    assert counts.empty and list(counts.columns) == list(COUNT_COLUMNS)
+    assert headline(total_counts([counts])) == "0 cells: 0 matched, 0 explained, 0 unresolved, 0 unexplained, 0 not produced"
+
+
+def test_an_unknown_status_is_an_error():
+    with pytest.raises(ValueError, match="registred"):
+        classify_cells(pd.DataFrame({"engine": ["a"], "status": ["registred"], "register_ids": [""]}), REGISTER)
+
+
+# -- a fresh run: every place shows the function's numbers -------------------------------------
+
+@pytest.fixture(scope="module")
+def fresh(tmp_path_factory) -> tuple[Path, list[str]]:
+    """``linkrepro reproduce ali1977-table3 --skip-readings``, in this process: (folder, stdout lines)."""
+    out = tmp_path_factory.mktemp("counts") / "out"
+    stdout = io.StringIO()
+    with contextlib.redirect_stdout(stdout):
+        assert main(["reproduce", SCENE, "--skip-readings", "--out", str(out)]) == 0
+    return out, stdout.getvalue().splitlines()
+
+
+@pytest.fixture(scope="module")
+def expected(fresh) -> pd.DataFrame:
+    """``count_cells`` on the diff.csv the run wrote."""
+    out, _ = fresh
+    diff = pd.read_csv(out / SCENE / "diff.csv", dtype={"register_ids": str, "published_text": str})
+    return count_cells(diff, register_mod.load())
+
+
+def _adds_up(words: str) -> dict[str, int]:
+    """The numbers of a headline, read back; checked to add up."""
+    found = re.fullmatch(r"(\d+) cells: (\d+) matched, (\d+) explained(?: \(([^)]*)\))?, (\d+) unresolved, "
+                         r"(\d+) unexplained, (\d+) not produced", words)
+    assert found, words
+    cells, matched, explained, kinds, unresolved, unexplained, not_produced = found.groups()
+    numbers = {"cells": int(cells), "matched": int(matched), "explained": int(explained),
+               "unresolved": int(unresolved), "unexplained": int(unexplained), "not-produced": int(not_produced)}
+    assert numbers["cells"] == sum(numbers[c] for c in CLASSES), words
+    if kinds:
+        by_kind = {k: int(n) for k, n in (part.rsplit(" ", 1) for part in kinds.split(", "))}
+        assert sum(by_kind.values()) == numbers["explained"] and set(by_kind) <= set(EXPLAINED_BY), words
+        numbers.update(by_kind)
+    return numbers
+
+
+def _markdown_table(lines: list[str], after: str) -> pd.DataFrame:
+    """The first markdown table after the line starting with ``after``: integers, engine as index."""
+    start = next(i for i, line in enumerate(lines) if line.startswith(after))
+    first = next(i for i in range(start, len(lines)) if lines[i].startswith("|"))
+    rows = []
+    for line in lines[first:]:
+        if not line.startswith("|"):
+            break
+        rows.append([c.strip() for c in line.strip("|").split("|")])
+    head, body = rows[0], rows[2:]
+    frame = pd.DataFrame(body, columns=head).set_index("engine").drop(columns=["seconds"], errors="ignore")
+    return frame.astype(int)
+
+
+def _as_shown(counts: pd.DataFrame) -> pd.DataFrame:
+    return counts.rename(columns=lambda c: f"explained: {c}" if c in EXPLAINED_BY else c)
+
+
+def _same(shown: pd.DataFrame, counts: pd.DataFrame) -> None:
+    """A table shown: the counts' numbers under their headings (a kind of explained that counts no
+    cell may be left out), every row adding up."""
+    full = _as_shown(counts)
+    assert list(shown.index) == list(full.index)
+    left_out = set(full.columns) - set(shown.columns)
+    assert all(full[c].eq(0).all() for c in left_out), left_out
+    pd.testing.assert_frame_equal(shown, full[list(shown.columns)], check_dtype=False)
+    assert (shown["cells"] == shown[["matched", "explained", "unresolved", "unexplained", "not-produced"]].sum(axis=1)).all()
+
+
+def test_the_run_has_unresolved_cells(expected):
+    """Table III has them (the cognate columns: no program was printed); else this test checks little."""
+    assert expected["unresolved"].sum() > 0 and expected["explained"].sum() > 0
+
+
+def test_cli_lines_are_the_counts(fresh, expected):
+    out, lines = fresh
+    total = expected[list(COUNT_COLUMNS)].sum(axis=0)
+    assert lines[-1] == f"report: {out / 'report.md'}  ({headline(total)})"
+    shown = _adds_up(lines[-1].split("  (", 1)[1][:-1])
+    assert shown == {c: int(total[c]) for c in ("cells", *CLASSES)}
+    assert lines[0] == f"{SCENE}:"
+    for engine, line in zip(expected.index, lines[1:-1], strict=True):
+        name, words = line.strip().split(": ", 1)
+        assert name == engine
+        numbers = _adds_up(words)
+        assert numbers == {c: int(expected.at[engine, c]) for c in numbers}
+        assert {k: int(n) for k, n in expected.loc[engine, list(EXPLAINED_BY)].items() if n} == \
+               {k: n for k, n in numbers.items() if k in EXPLAINED_BY}
+
+
+def test_run_report_shows_the_counts(fresh, expected):
+    out, _ = fresh
+    lines = (out / "report.md").read_text().splitlines()
+    head = next(line for line in lines if line.startswith("The published cells of every table below"))
+    numbers = _adds_up(head.split(": ", 1)[1].rstrip("."))
+    assert numbers == {c: int(n) for c, n in expected.sum(axis=0).items() if c in numbers}
+    _same(_markdown_table(lines, f"## [{SCENE}]"), expected)
+
+
+def test_scene_report_shows_the_counts(fresh, expected):
+    out, _ = fresh
+    lines = (out / SCENE / "report.md").read_text().splitlines()
+    _same(_markdown_table(lines, "## Cells against the published table"), expected)
+    assert "registered cells by the kind" not in "\n".join(lines).lower()
+
+
+class _Page(HTMLParser):
+    """report.html's overview table (rows of cell texts), its total line, and every table cell's
+    data-<engine> attributes."""
+
+    def __init__(self):
+        super().__init__()
+        self.overview, self.total, self.cells = [], "", []
+        self._in, self._row, self._text = None, None, None
+
+    def handle_starttag(self, tag, attrs):
+        attrs = dict(attrs)
+        if tag == "table" and "overview" in (attrs.get("class") or ""):
+            self._in = "overview"
+        elif tag == "p" and attrs.get("id") == "total":
+            self._in, self._text = "total", []
+        elif tag == "tr" and self._in == "overview":
+            self._row = []
+        elif tag in ("td", "th") and self._row is not None:
+            self._text = []
+        if tag == "td" and "cell" in (attrs.get("class") or "").split():
+            self.cells.append({k[5:]: v for k, v in attrs.items() if k.startswith("data-") and k != "data-cell"})
+
+    def handle_data(self, data):
+        if self._text is not None:
+            self._text.append(data)
+
+    def handle_endtag(self, tag):
+        if tag in ("td", "th") and self._row is not None:
+            self._row.append("".join(self._text).strip())
+            self._text = None
+        elif tag == "tr" and self._row is not None:
+            self.overview.append(self._row)
+            self._row = None
+        elif tag == "table" and self._in == "overview":
+            self._in = None
+        elif tag == "p" and self._in == "total":
+            self.total, self._in, self._text = "".join(self._text).strip(), None, None
+
+
+def test_html_overview_shows_the_counts(fresh, expected):
+    out, _ = fresh
+    page = _Page()
+    page.feed((out / "report.html").read_text())
+    head, *rows = page.overview
+    assert head[:2] == ["scene", "engine"]
+    shown = pd.DataFrame([r[1:] for r in rows], columns=head[1:]).set_index("engine").astype(int)
+    assert {r[0] for r in rows} == {SCENE}
+    _same(shown, expected)
+    assert page.total.endswith(f": {headline(expected.sum(axis=0))}.")
+    _adds_up(page.total.split(": ", 1)[1].rstrip("."))
+    # the cells' colours count the same: diff.csv's "registered" split into explained and unresolved
+    for engine in expected.index:
+        colours = pd.Series([c[engine] for c in page.cells]).value_counts()
+        assert {s: int(colours.get(s, 0)) for s in ("match", "explained", "unresolved", "unexplained", "not-produced")} \
+            == {"match": expected.at[engine, "matched"], **{c: expected.at[engine, c] for c in CLASSES[1:]}}, engine
+        assert "registered" not in colours
