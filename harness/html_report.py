@@ -130,7 +130,7 @@ def render(out_dir: Path, done: list[Outcome], bench_dir: Path | None = None) ->
                              undefined=jinja2.StrictUndefined, trim_blocks=True, lstrip_blocks=True)
     return env.get_template("report.html.j2").render(
         scenes=scenes, engines=ENGINES, statuses=CELL_STATUSES,
-        columns=[(c, heading(c)) for c in COUNT_COLUMNS], total=headline(total_counts(counted)),
+        columns=[(c, heading(c)) for c in COUNT_COLUMNS], total=headline(total_counts(counted), by_kind=True),
         entries=[_entry(register[i]) for i in sorted(used) if i in register],
         blocks={block: [_line(line) for line in lines] for lines, block in blocks.items()},
         cells_json=json.dumps(cells, separators=(",", ":")).replace("</", "<\\/"),
