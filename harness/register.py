@@ -1,15 +1,30 @@
 """The deviation register, harness/deviations.toml: every difference between what
 the thesis meant and what a run shows, with its evidence.
+
+An entry's ``[[deviation.check]]`` items make its quoted measurements re-runnable: ``command``
+is a command the entry's text quotes (in backticks) for a reader to re-measure with;
+``python`` is code that prints the entry's quoted figures, in order (for a quoted
+``python -c "CODE"`` command, CODE itself when ``python`` is left out); ``figures`` are
+those figures as the text quotes them.  ``figures_reproduced`` says whether what the code
+printed reproduces them to the digits quoted (tests/harness/test_register_citations.py runs
+every check).
 """
 from __future__ import annotations
 
+import re
+import shlex
 import tomllib
 from dataclasses import dataclass, field
+from decimal import Decimal, InvalidOperation, ROUND_HALF_EVEN
 from pathlib import Path
 
 REGISTER_PATH = Path(__file__).resolve().parent / "deviations.toml"
 KINDS = ("ocr", "original-bug", "portability", "published-misprint", "published-rounding", "unresolved")
 REQUIRED = ("id", "kind", "title", "where", "printed", "meant", "evidence", "effect")
+#: the text fields of an entry a reader reads (and the register's tests search)
+TEXT_FIELDS = ("title", "where", "printed", "meant", "evidence", "effect")
+#: a number as a check prints it or an entry quotes it: 70, -1.2443, +1.320e-4, 2.1e+00
+NUMBER = re.compile(r"(?<![\w.])[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?(?![\w.])")
 
 
 @dataclass(frozen=True)
@@ -27,6 +42,26 @@ class CellClaim:
 
 
 @dataclass(frozen=True)
+class Check:
+    """A re-measurement of figures an entry quotes (``[[deviation.check]]``)."""
+    command: str | None = None    # the command the entry's text quotes, as a reader types it
+    python: str | None = None     # code that prints ``figures`` in order (default: a quoted python -c's code)
+    figures: tuple = ()           # the quoted figures, as quoted ("70", "-1.2443", "+1.320e-4")
+    slow: bool = False            # run only on request (tests/harness/test_register_citations.py)
+
+    @property
+    def code(self) -> str | None:
+        """The Python code that prints the figures: ``python``, or the code of a quoted
+        ``python -c "..."`` command; None for a command whose own tests hold the figures."""
+        if self.python:
+            return self.python
+        words = shlex.split(self.command or "")
+        if words[:2] == ["python", "-c"] and len(words) == 3:
+            return words[2]
+        return None
+
+
+@dataclass(frozen=True)
 class Deviation:
     id: str
     kind: str
@@ -41,6 +76,28 @@ class Deviation:
     cells: tuple = ()
     moves: dict = field(default_factory=dict)     # scene -> columns the quirk moves
     readings: tuple = ()                          # {file, chosen, scan}: the scan's text put back
+    checks: tuple = ()                            # Check items: quoted figures and how to re-measure them
+
+    @property
+    def text(self) -> str:
+        """Every field a reader reads, one per line."""
+        return "\n".join(getattr(self, name) for name in TEXT_FIELDS)
+
+
+def _check(entry_id: str, raw: dict) -> Check:
+    unknown = set(raw) - {"command", "python", "figures", "slow"}
+    if unknown:
+        raise ValueError(f"register entry {entry_id}: check with unknown keys {sorted(unknown)}")
+    figures = tuple(raw.get("figures", []))
+    for figure in figures:
+        if not isinstance(figure, str) or not NUMBER.fullmatch(figure):
+            raise ValueError(f"register entry {entry_id}: check figure {figure!r} is not a number written as quoted")
+    check = Check(command=raw.get("command"), python=raw.get("python"), figures=figures, slow=bool(raw.get("slow", False)))
+    if not check.command and not check.python:
+        raise ValueError(f"register entry {entry_id}: a check needs a command or python code")
+    if figures and check.code is None:
+        raise ValueError(f"register entry {entry_id}: check figures {figures} need code that prints them")
+    return check
 
 
 def load(path: Path = REGISTER_PATH) -> dict[str, Deviation]:
@@ -62,9 +119,33 @@ def load(path: Path = REGISTER_PATH) -> dict[str, Deviation]:
             id=raw["id"], kind=raw["kind"], title=raw["title"], where=raw["where"],
             printed=raw["printed"], meant=raw["meant"], evidence=raw["evidence"],
             effect=raw["effect"], quirk=raw.get("quirk"), certainty=raw.get("certainty"),
-            cells=cells, moves=dict(raw.get("moves", {})), readings=tuple(raw.get("reading", [])))
+            cells=cells, moves=dict(raw.get("moves", {})), readings=tuple(raw.get("reading", [])),
+            checks=tuple(_check(raw["id"], c) for c in raw.get("check", [])))
     return entries
 
 
 def by_quirk(entries: dict[str, Deviation]) -> dict[str, Deviation]:
     return {e.quirk: e for e in entries.values() if e.quirk}
+
+
+def figure_reproduced(figure: str, printed: str) -> bool:
+    """Whether a printed number reproduces a quoted figure to the digits quoted: the printed
+    number rounded (half to even) at the figure's last digit is the figure, sign included
+    ("-0.000" is not "0.000").  The printed text is taken as the number: print with enough
+    digits (repr) for the figures quoted."""
+    try:
+        want, got = Decimal(figure), Decimal(printed)
+    except InvalidOperation:
+        return False
+    quantum = Decimal(1).scaleb(want.as_tuple().exponent)
+    return got.quantize(quantum, rounding=ROUND_HALF_EVEN) == want and got.is_signed() == want.is_signed()
+
+
+def figures_reproduced(figures: tuple | list, output: str) -> list[str]:
+    """What a check's output gets wrong (empty: every figure reproduced): the numbers ``output``
+    prints, in order, against ``figures``, one for one."""
+    printed = NUMBER.findall(output)
+    if len(printed) != len(figures):
+        return [f"printed {len(printed)} numbers {printed} for the {len(figures)} figures {list(figures)}"]
+    return [f"quoted {want}, measured {got}" for want, got in zip(figures, printed)
+            if not figure_reproduced(want, got)]
