@@ -33,7 +33,8 @@ def report_links(out_dir) -> list[str]:
 def hook_modules(hook: str) -> list:
     """Each thesis's ``<hook>`` module (``bench``: its part of ``linkrepro bench``, see
     ``harness/bench.py``; ``fuzz``: its entry points, ``harness/fuzz_calls.py``; ``commands``: its
-    own commands, ``harness/command.py``), where it has one."""
+    own commands, ``harness/command.py``; ``docs``: its generated blocks of the docs,
+    ``harness/docs.py``), where it has one."""
     modules = []
     for thesis in THESES:
         name = f"{thesis.__name__}.{hook}"

@@ -1,0 +1,75 @@
+"""The words a reader is shown: README.md and docs/*.md.
+
+- every generated block (``harness/docs.py``: the counts of a run, the explain trail, the CSSP's
+  differential sample) is what a fresh computation gives now;
+- every ``python`` block runs, each in a fresh interpreter (an intended error is caught in the
+  block itself);
+- every relative link leads to a file, and no page speaks of tools a reader does not have or of
+  issue numbers they cannot look up;
+- the README stays a newcomer's page: short, the findings in docs/.
+"""
+from __future__ import annotations
+
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from linkrepro.harness import docs
+from tests.patience import CHILD_SECONDS
+
+ROOT = Path(__file__).resolve().parents[2]
+PAGES = docs.pages(ROOT)
+PYTHON = re.compile(r"```python\n(.*?)```", re.S)
+LINK = re.compile(r"\]\(([^)#:]+?)(?:#[^)]*)?\)")
+#: what no page may say: tools of the developers' machine, the issue tracker
+FORBIDDEN = re.compile(r"duplicates --change|\.\./shared|\bissue \d+|the issue named|the project's issue")
+
+
+def test_the_pages_are_found():
+    names = {p.relative_to(ROOT).as_posix() for p in PAGES}
+    assert "README.md" in names and "docs/reliability.md" in names
+
+
+def test_every_generated_block_is_what_a_run_gives_now():
+    stale = [p.relative_to(ROOT).as_posix() for p in PAGES if docs.filled(p.read_text()) != p.read_text()]
+    assert stale == [], f"out of date (python -m linkrepro.harness.docs rewrites them): {stale}"
+
+
+def test_the_generated_blocks_are_there():
+    names = {m.group("name") for p in PAGES for m in docs.BLOCK.finditer(p.read_text())}
+    assert {"results summary", "results ali1977", "results rahman1996", "explain", "differential"} <= names
+
+
+EXAMPLES = [(p.relative_to(ROOT).as_posix(), k, code) for p in PAGES for k, code in enumerate(PYTHON.findall(p.read_text()))]
+
+
+@pytest.mark.parametrize("page, index, code", EXAMPLES, ids=[f"{p}#{k}" for p, k, _ in EXAMPLES])
+def test_every_python_example_runs(page, index, code, tmp_path):
+    done = subprocess.run([sys.executable, "-c", code], cwd=tmp_path, capture_output=True, text=True,
+                          timeout=CHILD_SECONDS)
+    assert done.returncode == 0, f"{page} example {index}:\n{done.stderr[-2000:]}"
+
+
+@pytest.mark.parametrize("page", PAGES, ids=lambda p: p.relative_to(ROOT).as_posix())
+def test_links_lead_somewhere_and_no_page_speaks_of_what_a_reader_lacks(page):
+    text = page.read_text()
+    for target in LINK.findall(text):
+        assert (page.parent / target).exists(), f"{page.name}: link to {target}"
+    assert not FORBIDDEN.search(text), FORBIDDEN.search(text).group(0)
+
+
+def test_the_readme_is_a_newcomers_page():
+    lines = (ROOT / "README.md").read_text().splitlines()
+    heads = [line for line in lines if line.startswith("## ")]
+    assert len(lines) <= 200
+    assert heads[:2] == ["## Set-up: two commands", "## What comes out"] and "## Where to go next" in heads
+
+
+def test_the_checks_can_fail(tmp_path):
+    page = tmp_path / "README.md"
+    page.write_text("<!-- generated: differential -->\nstale\n<!-- end generated -->\n")
+    assert docs.main(["--root", str(tmp_path), "--check"]) == 1
+    assert FORBIDDEN.search("see issue 12") and FORBIDDEN.search("run duplicates --change")
