@@ -23,7 +23,9 @@ fuzz: $(VENV)/.installed
 	HYPOTHESIS_PROFILE=thorough $(BIN)/python -m pytest -q -n auto tests/ali1977/test_differential.py \
 	  tests/ali1977/test_cognate_geometry.py tests/ali1977/test_conditioning.py \
 	  tests/rahman1996/test_differential.py tests/rahman1996/test_differential_qprog.py \
-	  tests/rahman1996/test_qprog_scaling.py tests/rahman1996/test_arguments.py
+	  tests/rahman1996/test_qprog_scaling.py tests/rahman1996/test_qprog_feasibility.py \
+	  tests/rahman1996/test_arguments.py
+	LINKREPRO_SLOW_CHECKS=1 $(BIN)/python -m pytest -q tests/harness/test_register_citations.py
 
 setup: $(VENV)/.installed
 

@@ -15,7 +15,7 @@ Per variant and per table: the cells at the printed digit, within 1e-7 and 1e-6 
 values the variants give and whether every variant prints the same digits
 (``arithmetic_cells.csv``).  A variant is adopted only if it stands for an arithmetic
 documented for machines of the time AND raises the count in every one of Tables 5.2-5.7
-without lowering Table 5.1 (issue 13, section 4): ``meets_criterion``.  None is adopted into
+without lowering Table 5.1: ``meets_criterion``.  None is adopted into
 the default build here; the verdict is reported.
 
 Needs gfortran on PATH (``readings.CompilerError`` otherwise) and the source tree's legacy/.
@@ -135,7 +135,7 @@ def count_frame(m: Measurement, cells: pd.DataFrame | None = None) -> pd.DataFra
 
 def meets_criterion(counts: pd.DataFrame) -> dict[str, bool]:
     """Per variant: documented for machines of the time, raises the count in every one of
-    Tables 5.2-5.7 and does not lower Table 5.1 (issue 13, section 4)."""
+    Tables 5.2-5.7 and does not lower Table 5.1."""
     out = {}
     for name, part in counts.groupby("variant", sort=False):
         gain = part.set_index("table")["gain"]
@@ -212,7 +212,7 @@ def as_markdown(m: Measurement, counts: pd.DataFrame, cells: pd.DataFrame) -> st
                      f" | {part.at['all', 'max_rel_change']:.1e} | {(part.loc[head, 'gain'] > 0).sum()} / "
                      f"{(part.loc[head, 'gain'] < 0).sum()} | {by_column[v.name].get('before', 0)} / "
                      f"{by_column[v.name].get('after', 0)} | {'yes' if verdict[v.name] else 'no'} |")
-    lines += ["", "**Criterion** (issue 13): a variant is adopted only if its arithmetic is documented for "
+    lines += ["", "**Criterion**: a variant is adopted only if its arithmetic is documented for "
               "machines of the time and it raises the count in every one of Tables 5.2-5.7 without "
               "lowering Table 5.1; never cell by cell. "
               + (f"Met by: {', '.join(adopted)} (not adopted into the default build here: the register decides)."

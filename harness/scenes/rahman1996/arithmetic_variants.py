@@ -271,7 +271,7 @@ VARIANTS: tuple[Variant, ...] = (
             "(4.3BSD 1985, Sun, DEC), xlf -qautodbl", True,
             ("-fdefault-real-8", "-fdefault-double-8"), keeps_types=False),
     Variant("long-constants-double", "literal constants of more than seven digits kept in double "
-            "(1.1636867, 2.3139072, 4.6210569): the issue's hypothesis; no compiler found documented "
+            "(1.1636867, 2.3139072, 4.6210569): a hypothesis tested here; no compiler found documented "
             "to decide by the count of digits", False, transform=long_constants_double, keeps_types=False),
     Variant("context-constants", "a constant assigned to a REAL*8 variable taken as double, "
             "W/G and 4.0*ATAN(1.0) left single (the g77 manual, 'Context-Sensitive Constants': "

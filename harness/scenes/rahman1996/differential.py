@@ -27,7 +27,7 @@ JUMP = 1e-3
 
 
 def sample(n: int, seed: int = 1) -> list[dict]:
-    """n geometries of the issue's domain (inches, degrees, rpm)."""
+    """n geometries of the sampled domain (inches, degrees, rpm)."""
     rng = np.random.default_rng(seed)
     return [dict(a1=rng.uniform(0.5, 4), a2=rng.uniform(3, 12), a4=rng.uniform(-3, 3),
                  alpha4_deg=rng.uniform(0, 360), s1=rng.uniform(-1, 1), rpm=3000.0) for _ in range(n)]

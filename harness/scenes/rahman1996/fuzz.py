@@ -12,7 +12,7 @@ from ...fuzz_calls import (ANGLES, CONTAINER, FLAG, FLOAT, INT, MATRIX, QUIRKS, 
 def cssp_inputs(rng) -> Call:
     """The CSSP's geometry: near the example, or (one call in four) next to its singular
     position, the rod just long enough to reach (a2 = |a1 + a4| (1 + 1e-3 ... 1e-12), the
-    issue's family a1 = 2, a2 = 3 (1 + 1e-8), a4 = 1, alpha4 = 90 deg, s1 = 0)."""
+    family of the singular example a1 = 2, a2 = 3 (1 + 1e-8), a4 = 1, alpha4 = 90 deg, s1 = 0)."""
     if rng.random() < 0.25:
         a1, a4 = round(rng.uniform(0.5, 4.0), 4), round(rng.uniform(-3.0, 3.0), 4)
         reach = abs(a1 + a4) or 1.0
