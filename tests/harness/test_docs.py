@@ -73,3 +73,10 @@ def test_the_checks_can_fail(tmp_path):
     page.write_text("<!-- generated: differential -->\nstale\n<!-- end generated -->\n")
     assert docs.main(["--root", str(tmp_path), "--check"]) == 1
     assert FORBIDDEN.search("see issue 12") and FORBIDDEN.search("run duplicates --change")
+
+
+def test_the_fuzz_count_a_page_quotes_is_the_one_make_fuzz_runs():
+    calls = int(re.search(r"--calls (\d+)", (ROOT / "Makefile").read_text()).group(1))
+    quoted = [(p.name, int(n.replace(",", ""))) for p in PAGES
+              for n in re.findall(r"([\d,]+) random and hostile calls", p.read_text())]
+    assert quoted and all(n == calls for _, n in quoted), (calls, quoted)
