@@ -21,7 +21,7 @@ and RHS are sized by the constraints (the FORTRAN's, sized by the variables, ove
 Non-finite a, b, h or g are ValueError and a non-finite solution or DIAG (overflow) is
 QPError, in both faces (``linkrepro.checks``).
 
-Its tolerances were absolute (issue 22: a row scaled by 1e13, or H by 1e16, gave a wrong
+Its tolerances were absolute (D050: a row scaled by 1e13, or H by 1e16, gave a wrong
 answer or "inconsistent"), so DQPROG now solves the problem in its own units (``_dqprog``):
 each row of a and b scaled by a power of two to a largest entry in [1, 2), H and g by a
 power of four to a largest |H_ij| in [1, 4), the Goldfarb-Idnani method (QPSOLV,
@@ -29,7 +29,7 @@ power of four to a largest |H_ij| in [1, 4), the Goldfarb-Idnani method (QPSOLV,
 with rows, H and g scaled by any factors get the same answer up to rounding, and by powers
 of two (four for H) the same bits.
 
-Infeasible problems were returned as solved (issue 22, found by the fuzz): where a violated
+Infeasible problems were returned as solved (D050, found by the fuzz): where a violated
 row's normal depends on the active ones, z = 0 up to rounding, but the test ZN > eps |n+|^2
 was absolute and rounding passed it, so the method stepped S/ZN ~ 1e14 along noise and added
 the row (more active rows than variables), leaving others violated.  Mended in the FORTRAN
@@ -59,7 +59,7 @@ from ...errors import QPError
 
 #: DQPROG's PARAMETERs: at most 60 variables and 200 constraints
 MAXV, MAXC = 60, 200
-#: status codes, COMMON /QPSTAT/ (MISSES: QPSOLV's last guard, issue 22)
+#: status codes, COMMON /QPSTAT/ (MISSES: QPSOLV's last guard, D050)
 SOLVED, INCONSISTENT, ITERATION_LIMIT, BAD_ARGUMENTS, MISSES = 0, 1, 2, 3, 4
 #: QPError's message for status 4
 MISSES_MESSAGE = ("QPROG: the solution found misses a constraint by more than the method's rounding "
@@ -295,7 +295,7 @@ def _solve(h, g, a, b, neq):
     Indices are 0-based (constraint i is the FORTRAN's I = i+1; P = 0 is p = -1).
     ``gn[k]`` holds the column GN(.,K).  Work arrays are sized by NCON (see the module
     docstring), the FORTRAN's by MAXV.  ``held[i]``: equality i holds and depends on the
-    active rows; not added, and not picked again until sol moves (issue 22).
+    active rows; not added, and not picked again until sol moves (D050).
     """
     nvar, ncon = g.shape[0], b.shape[0]
     low = np.zeros((nvar, nvar))
@@ -307,7 +307,7 @@ def _solve(h, g, a, b, neq):
     w = np.empty(nvar)
     z = np.empty(nvar)
     # how far a solved sol may miss a row, relative to its size: 1e3 eps, and 8 eps kappa
-    # for the rounding of the method where H + DIAG I is ill-conditioned (issue 22)
+    # for the rounding of the method where H + DIAG I is ill-conditioned (D050)
     gtol = EPS * (1.0e3 + 8.0 * _kappa(h, diag, low, w, z))
     # ---- unconstrained minimum: SOL = -(H+DIAG I)^-1 G (140)
     rhs = np.empty(max(nvar, ncon))

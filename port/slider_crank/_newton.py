@@ -9,7 +9,7 @@ DDOT block) solve the dual-number loop closure M1 L2 L3 M4 = I for q = (theta2, 
 theta3, eta3, s4) by DELTA = (A'A)^-1 A' V, position after position, each from the last
 answer.  Where the first estimate is poor the iteration wanders for tens of steps over
 radians before it settles, and there it is chaotic: a difference in the last bit of one
-product can send it to another branch (issue 11 measured this: numpy's matrix product,
+product can send it to another branch (measured while the port was built: numpy's matrix product,
 which rounds through BLAS with fused multiply-adds, made the port and the legacy build
 converge to different positions on a quarter of random geometries).  So every operation
 here is the listing's, in the listing's order: MULTI and MULMAVEC sum left to right from
