@@ -1,0 +1,68 @@
+"""The figure checker (harness/figures.py) on made-up figures: each rule it states is broken
+once and found; a figure that keeps them passes; a written PNG is a palette image."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from PIL import Image
+
+from linkrepro.harness import figures
+
+X = np.linspace(0.0, 360.0, 73)
+
+
+def drawn(fig):
+    canvas = FigureCanvasAgg(fig)
+    canvas.draw()
+    return figures.problems(fig, canvas.get_renderer())
+
+
+def clean():
+    fig = figures.new_figure(6.4, 3.6)
+    ax = fig.add_subplot()
+    for k, engine in enumerate(("legacy", "port_printed", "port_corrected")):
+        ax.plot(X, np.sin(np.radians(X)) + 0.2 * k, label=engine, **figures.ENGINE_STYLE[engine])
+    ax.set_xlabel("crank angle (deg)")
+    ax.set_ylabel("slider displacement (in)")
+    ax.set_title("a clean figure")
+    ax.set_ylim(-1.2, 2.8)
+    ax.legend(loc="upper left", ncols=3)
+    fig.subplots_adjust(left=0.12, right=0.97, bottom=0.15, top=0.9)
+    return fig, ax
+
+
+def test_a_clean_figure_passes(tmp_path):
+    fig, _ = clean()
+    assert drawn(fig) == []
+    path = figures.save(fig, tmp_path / "clean.png")
+    with Image.open(path) as image:
+        assert image.mode == "P" and image.size == (int(6.4 * figures.DPI), int(3.6 * figures.DPI))
+
+
+@pytest.mark.parametrize("breaks, found", [
+    (lambda fig, ax: ax.tick_params(labelsize=7), "at 7 pt"),
+    (lambda fig, ax: fig.set_figwidth(13), "13.0 in wide"),
+    (lambda fig, ax: ax.text(180, 0.0, "a note on the curve", fontsize=9), "px of data"),
+    (lambda fig, ax: ax.legend(loc="center"), "px of data"),
+    (lambda fig, ax: ax.set_ylabel("deflection (in, rad)"), "several units"),
+    (lambda fig, ax: ax.set_xlabel(""), "without a x label"),
+    (lambda fig, ax: fig.text(0.5, 0.93, "over the title", ha="center", fontsize=10), "over"),
+    (lambda fig, ax: (ax.plot(X, 0 * X + 2.0, color="tab:blue", label="legacy again"), ax.legend(loc="upper left")),
+     "look alike"),
+])
+def test_each_rule_broken_is_found(breaks, found):
+    fig, ax = clean()
+    breaks(fig, ax)
+    assert any(found in problem for problem in drawn(fig)), drawn(fig)
+
+
+def test_strict_mode_raises_and_otherwise_warns(tmp_path, monkeypatch):
+    fig, ax = clean()
+    ax.tick_params(labelsize=6)
+    monkeypatch.setenv(figures.STRICT_ENV, "1")
+    with pytest.raises(figures.FigureError, match="at 6 pt"):
+        figures.save(fig, tmp_path / "small.png")
+    monkeypatch.delenv(figures.STRICT_ENV)
+    with pytest.warns(figures.FigureWarning, match="at 6 pt"):
+        figures.save(fig, tmp_path / "small.png")
