@@ -32,7 +32,7 @@ from matplotlib.figure import Figure
 from matplotlib.legend import Legend
 from matplotlib.lines import Line2D
 from matplotlib.text import Text
-from PIL import Image
+from PIL import Image, PngImagePlugin
 
 #: pixels per inch of every figure (a CSS pixel is 1/96 in)
 DPI = 96
@@ -46,6 +46,8 @@ RC = {"font.size": 10, "axes.titlesize": 10, "axes.labelsize": 10, "xtick.labels
       "ytick.labelsize": 9, "legend.fontsize": 9, "figure.titlesize": 11, "legend.frameon": True,
       "legend.framealpha": 0.9}
 STRICT_ENV = "LINKREPRO_STRICT_FIGURES"
+#: the PNG text chunk that holds a figure's caption
+CAPTION_KEY = "Description"
 
 #: one look per engine: no two alike in colour, dash and marker (the port's printed face draws
 #: over legacy's curve bit for bit, so it is dashed with sparse markers to stay visible)
@@ -71,9 +73,12 @@ def new_figure(width_in: float, height_in: float) -> Figure:
         return Figure(figsize=(width_in, height_in), dpi=DPI)
 
 
-def save(fig: Figure, path: Path, **margins) -> Path:
+def save(fig: Figure, path: Path, caption: str, **margins) -> Path:
     """Draw ``fig`` (``margins``: ``subplots_adjust``'s, where given), check it, write it to
-    ``path`` as a palette PNG; returns ``path``."""
+    ``path`` as a palette PNG with ``caption`` (what it shows, in words: the report prints it
+    under the figure, ``caption_of``); returns ``path``."""
+    if not caption.strip():
+        raise ValueError(f"{Path(path).name}: a figure needs a caption in words")
     if margins:
         fig.subplots_adjust(**margins)
     fig.set_dpi(DPI)
@@ -87,11 +92,19 @@ def save(fig: Figure, path: Path, **margins) -> Path:
             raise FigureError(message)
         warnings.warn(message, FigureWarning, stacklevel=2)
     image = Image.fromarray(np.asarray(canvas.buffer_rgba())[..., :3])
+    text = PngImagePlugin.PngInfo()
+    text.add_itxt(CAPTION_KEY, caption)
     buffer = io.BytesIO()
     image.quantize(PALETTE, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE).save(
-        buffer, format="png", optimize=True)
+        buffer, format="png", optimize=True, pnginfo=text)
     Path(path).write_bytes(buffer.getvalue())
     return Path(path)
+
+
+def caption_of(path: Path) -> str:
+    """The caption ``save`` wrote into a PNG ('' for another file)."""
+    with Image.open(path) as image:
+        return str(getattr(image, "text", {}).get(CAPTION_KEY, ""))
 
 
 # ---- the checks ------------------------------------------------------------------------------

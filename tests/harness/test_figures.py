@@ -35,7 +35,10 @@ def clean():
 def test_a_clean_figure_passes(tmp_path):
     fig, _ = clean()
     assert drawn(fig) == []
-    path = figures.save(fig, tmp_path / "clean.png")
+    path = figures.save(fig, tmp_path / "clean.png", "A clean figure: three sines, in words")
+    assert figures.caption_of(path) == "A clean figure: three sines, in words"
+    with pytest.raises(ValueError, match="caption"):
+        figures.save(fig, tmp_path / "bare.png", " ")
     with Image.open(path) as image:
         assert image.mode == "P" and image.size == (int(6.4 * figures.DPI), int(3.6 * figures.DPI))
 
@@ -62,7 +65,7 @@ def test_strict_mode_raises_and_otherwise_warns(tmp_path, monkeypatch):
     ax.tick_params(labelsize=6)
     monkeypatch.setenv(figures.STRICT_ENV, "1")
     with pytest.raises(figures.FigureError, match="at 6 pt"):
-        figures.save(fig, tmp_path / "small.png")
+        figures.save(fig, tmp_path / "small.png", "small")
     monkeypatch.delenv(figures.STRICT_ENV)
     with pytest.warns(figures.FigureWarning, match="at 6 pt"):
-        figures.save(fig, tmp_path / "small.png")
+        figures.save(fig, tmp_path / "small.png", "small")
