@@ -150,29 +150,45 @@ def _overlap(a, b, slack: float = 1.0) -> bool:
     return (a.x0 + slack < b.x1 and b.x0 + slack < a.x1 and a.y0 + slack < b.y1 and b.y0 + slack < a.y1)
 
 
+def _clip(a: np.ndarray, b: np.ndarray, box) -> tuple[np.ndarray, np.ndarray]:
+    """The segments a[k] -> b[k] (display px) cut to ``box`` (Liang-Barsky); those that miss it,
+    or have an end that is not finite, left out."""
+    ok = np.isfinite(a).all(axis=1) & np.isfinite(b).all(axis=1)
+    a, b = a[ok], b[ok]
+    d = b - a
+    t0, t1 = np.zeros(len(a)), np.ones(len(a))
+    for k, (low, high) in enumerate(((box.x0, box.x1), (box.y0, box.y1))):
+        flat = d[:, k] == 0
+        with np.errstate(divide="ignore", invalid="ignore"):
+            ta, tb = (low - a[:, k]) / d[:, k], (high - a[:, k]) / d[:, k]
+        t0 = np.where(flat, t0, np.maximum(t0, np.minimum(ta, tb)))
+        t1 = np.where(flat, t1, np.minimum(t1, np.maximum(ta, tb)))
+        t1[flat & ((a[:, k] < low) | (a[:, k] > high))] = -1.0
+    keep = t0 <= t1
+    return a[keep] + t0[keep, None] * d[keep], a[keep] + t1[keep, None] * d[keep]
+
+
 def _data_points(axes) -> np.ndarray:
-    """The axes' curves and markers in display pixels, curves sampled every 2 px."""
+    """The axes' curves and markers in display pixels, inside the axes: markers at their centres,
+    curves sampled every 2 px or less (each segment cut to the axes first: a curve may run far
+    beyond them)."""
+    box = axes.get_window_extent()
     points = []
     for line in axes.lines:
         if not line.get_visible() or len(line.get_xdata()) == 0:
             continue
         xy = line.get_transform().transform(np.column_stack([line.get_xdata(), line.get_ydata()]).astype(float))
-        xy = xy[np.isfinite(xy).all(axis=1)] if line.get_linestyle() in ("None", "none", "") else xy
-        if line.get_linestyle() in ("None", "none", ""):
-            points.append(xy)
+        if line.get_linestyle() in ("None", "none", "") or len(xy) < 2:
+            points.append(xy[np.isfinite(xy).all(axis=1)])
             continue
-        for run in np.split(xy, np.flatnonzero(~np.isfinite(xy).all(axis=1))):
-            run = run[np.isfinite(run).all(axis=1)]
-            if len(run) < 2:
-                points.append(run)
-                continue
-            length = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(run, axis=0).T))])
-            at = np.linspace(0.0, length[-1], max(2, int(length[-1] / 2.0) + 1))
-            points.append(np.column_stack([np.interp(at, length, run[:, 0]), np.interp(at, length, run[:, 1])]))
+        a, b = _clip(xy[:-1], xy[1:], box)
+        counts = np.maximum(2, (np.hypot(*(b - a).T) / 2.0).astype(int) + 1)
+        segment = np.repeat(np.arange(len(a)), counts)
+        at = (np.arange(counts.sum()) - np.repeat(np.cumsum(counts) - counts, counts)) / np.repeat(counts - 1, counts)
+        points.append(a[segment] + at[:, None] * (b - a)[segment])
     for collection in axes.collections:
         if isinstance(collection, PathCollection) and collection.get_visible():
             points.append(collection.get_offset_transform().transform(collection.get_offsets()))
-    box = axes.get_window_extent()
     points = [p for p in points if len(p)]
     if not points:
         return np.empty((0, 2))

@@ -69,3 +69,15 @@ def test_strict_mode_raises_and_otherwise_warns(tmp_path, monkeypatch):
     monkeypatch.delenv(figures.STRICT_ENV)
     with pytest.warns(figures.FigureWarning, match="at 6 pt"):
         figures.save(fig, tmp_path / "small.png", "small")
+
+
+def test_a_curve_far_off_scale_is_checked_within_its_axes():
+    # a spike of 1e15 (the 1991 loads at a dead centre) beyond the y-limits: the check samples
+    # only what the axes show (it once sampled the whole curve, 1e14 pixels long, every 2 px)
+    fig, ax = clean()
+    spike = np.where(np.abs(X - 340.0) < 1.0, 1e15, np.sin(np.radians(X)))
+    ax.plot(X, spike, color="tab:red", label="a spike")
+    ax.legend(loc="upper left", ncols=2)
+    assert drawn(fig) == []
+    ax.text(335.0, 2.2, "on", fontsize=9)
+    assert any("px of data" in problem for problem in drawn(fig))
