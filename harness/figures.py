@@ -111,17 +111,22 @@ def caption_of(path: Path) -> str:
 
 def _undrawn_ticks(fig: Figure) -> set[int]:
     """ids of the texts of hidden axes, and of the tick labels matplotlib keeps outside an
-    axis's view: texts it does not draw."""
+    axis's view: texts it does not draw.  As matplotlib decides, in the axis's scale (on a log
+    axis, 1e-2 lies outside a view from 0.16 to 1e16, however wide the view is in data units)."""
     hidden = set()
     for axes in fig.axes:
         if not (axes.get_visible() and axes.axison):
             hidden |= {id(text) for text in axes.findobj(Text)}
             continue
         for axis in (axes.xaxis, axes.yaxis):
-            low, high = sorted(axis.get_view_interval())
+            scale = axis.get_transform()
+            low, high = sorted(scale.transform(np.asarray(axis.get_view_interval(), float)))
             slack = 1e-9 * (high - low)
-            hidden |= {id(label) for tick in axis.get_major_ticks() + axis.get_minor_ticks()
-                       if not low - slack <= tick.get_loc() <= high + slack
+            ticks = axis.get_major_ticks() + axis.get_minor_ticks()
+            with np.errstate(divide="ignore", invalid="ignore"):
+                at = scale.transform(np.array([tick.get_loc() for tick in ticks], float))
+            hidden |= {id(label) for tick, loc in zip(ticks, at)
+                       if not (np.isfinite(loc) and low - slack <= loc <= high + slack)
                        for label in (tick.label1, tick.label2)}
     return hidden
 

@@ -81,3 +81,19 @@ def test_a_curve_far_off_scale_is_checked_within_its_axes():
     assert drawn(fig) == []
     ax.text(335.0, 2.2, "on", fontsize=9)
     assert any("px of data" in problem for problem in drawn(fig))
+
+
+def test_a_tick_outside_a_log_view_is_not_counted():
+    """matplotlib decides which ticks it draws in the axis's scale: on a log axis viewing 0.16 to
+    6e16, the tick at 1e-2 is not drawn, and its label (left where the view's edge would put it,
+    under the neighbouring panel's last label) is no text over another."""
+    fig = figures.new_figure(11.0, 4.0)
+    axes = fig.subplots(1, 2, sharey=True)
+    for ax in axes:
+        ax.loglog([1.0, 1e16], [1e-15, 1.0], "o")
+        ax.set_xlabel("condition")
+    axes[0].set_ylabel("relative error")
+    fig.subplots_adjust(left=0.07, right=0.97, bottom=0.15, top=0.9, wspace=0.04)
+    assert drawn(fig) == []
+    outside = [tick.label1 for tick in axes[0].xaxis.get_major_ticks() if tick.get_loc() < axes[0].get_xlim()[0]]
+    assert outside and {id(label) for label in outside} <= figures._undrawn_ticks(fig)
