@@ -81,8 +81,10 @@ def _parser() -> tuple[_Parser, dict[str, _Parser], dict]:
     explain.add_argument("row", help="the row as printed in the table's first column(s), e.g. 160 or crank/i_xx")
     explain.add_argument("column", help="the column, e.g. src_dx (the scene's report lists them)")
     explain.add_argument("--out", default=Path("out"), type=_out_folder,
-                         help="a run's output folder to read the diff from (default: out/); where it has no "
-                              "diff for the scene, the scene's engines are run now")
+                         help="a run's output folder to read the scene's diff from (default: out/)")
+    explain.add_argument("--run", action="store_true",
+                         help="where --out holds no run of the scene, run its engines now (seconds to a minute) "
+                              "instead of stopping with an error")
     bench = sub.add_parser("bench", help="time each engine against its error: cost per position against "
                            "legacy and a flop-count limit, and speed against error for each knob")
     bench.add_argument("--repeat", type=_repeat, default=10,
@@ -125,16 +127,24 @@ def _under(exc: OSError, folder: Path) -> bool:
 
 
 def _summary(done: list, out_dir: Path) -> None:
-    """Each table's cells per engine (``diff.count_cells``), then the last line: the report and
-    the cells of every table and engine (matched, explained, unresolved, unexplained, not produced)."""
+    """Each table's cells per engine of this run (``diff.count_cells``), then the last line: the
+    report and the cells of every table and engine it shows (matched, explained, unresolved,
+    unexplained, not produced), this run's scenes and those run into the folder before."""
     from .diff import headline
-    from .run import cell_totals
     for item in done:
         if item.counts is not None:
             _out(f"{item.scene}:")
             for engine, row in item.counts.iterrows():
                 _out(f"  {engine}: {headline(row, by_kind=True)}")
-    _out(f"report: {out_dir / 'report.md'}  ({headline(cell_totals(done))})")
+    _report_line(out_dir, lambda folder: f"; {headline(folder.cell_totals())}")
+
+
+def _report_line(out_dir: Path, more=lambda folder: "") -> None:
+    """The last line of a run: the folder's report.html (and report.md), the scenes it shows."""
+    from .report_folder import collect
+    folder = collect(out_dir)
+    scenes = len(folder.outcomes)
+    _out(f"report: {out_dir / 'report.html'} and report.md  ({scenes} scene{'s' * (scenes != 1)}{more(folder)})")
 
 
 def _reproduce(args: argparse.Namespace, parser: _Parser) -> int:
@@ -168,7 +178,8 @@ def _reproduce(args: argparse.Namespace, parser: _Parser) -> int:
 
 def _explain(args: argparse.Namespace, parser: _Parser) -> int:
     """``linkrepro explain SCENE ROW COLUMN``: the cell's trail printed; an unknown scene, row or
-    column is a usage error (status 2); an engine that cannot run, status 1."""
+    column, or an --out without a run of the scene (unless --run), is a usage error (status 2);
+    an engine that cannot run, status 1."""
     from .scenes import TABLES
     if args.scene not in TABLES:
         known = list(TABLES)
@@ -178,8 +189,14 @@ def _explain(args: argparse.Namespace, parser: _Parser) -> int:
     from .engines import PrintedProgramError
     from .trail import CellNotFound, as_text, cell_trail, read_diff
     scene = TABLES[args.scene]
+    ran = args.out / scene.name / "diff.csv"
+    if not args.run and not ran.is_file():
+        why = ("does not exist" if not args.out.exists() else "is not a folder" if not args.out.is_dir()
+               else f"holds no run of {scene.name} (no {ran.relative_to(args.out)})")
+        parser.error(f"--out {args.out} {why}: `linkrepro reproduce {scene.name} --out {args.out}` runs it, "
+                     "or add --run to run its engines now")
     try:
-        diff = read_diff(scene, args.out)
+        diff = read_diff(scene, args.out if ran.is_file() else None)
         text = as_text(cell_trail(scene, args.row, args.column, diff))
     except CellNotFound as exc:
         parser.error(str(exc))
@@ -221,7 +238,25 @@ def _bench(args: argparse.Namespace) -> int:
     """``linkrepro bench``: --out checked writable before the run (status 2), a failed write
     after it status 1; the markdown printed."""
     from .bench_run import OUTPUTS, run_bench
-    return _write_outputs(args.out, OUTPUTS, "the bench", lambda: run_bench(args.repeat, args.out, quick=args.quick))
+    status = _write_outputs(args.out, OUTPUTS, "the bench", lambda: run_bench(args.repeat, args.out, quick=args.quick))
+    return status or _report_of_parent(args.out, "bench")
+
+
+def _report_of_parent(out: Path, folder: str) -> int:
+    """After a command that wrote ``out``: where ``out`` is a report folder's ``folder`` (its
+    default, e.g. out/bench), rebuild that folder's report (which shows it) and name it;
+    else say where the output is.  A failed write, status 1."""
+    from .report_folder import write
+    if out.name != folder:
+        _out(f"written: {out} (a report shows it when it is a report folder's {folder}/)")
+        return 0
+    try:
+        write(out.parent)
+    except OSError as exc:
+        _error(f"could not write {exc.filename}: {exc.strerror or exc}")
+        return 1
+    _report_line(out.parent)
+    return 0
 
 
 def _main(argv: list[str] | None) -> int:
@@ -240,8 +275,9 @@ def _main(argv: list[str] | None) -> int:
         return _bench(args)
     if args.command in theirs:          # a thesis's own command (harness/command.py)
         command = theirs[args.command]
-        return _write_outputs(args.out, command.outputs, f"linkrepro {command.name}", lambda: command.run(args),
-                              command.failures)
+        status = _write_outputs(args.out, command.outputs, f"linkrepro {command.name}", lambda: command.run(args),
+                                command.failures)
+        return status or (_report_of_parent(args.out, command.default_out.name) if command.report_markdown else 0)
     raise AssertionError(f"command {args.command!r} has no branch")
 
 

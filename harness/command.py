@@ -23,3 +23,7 @@ class Command:
     run: Callable[[argparse.Namespace], str]            # the work; returns the markdown to print
     failures: tuple[type[BaseException], ...] = ()      # a failed run (status 1, one line)
     add_arguments: Callable[[argparse.ArgumentParser], None] = lambda parser: None
+    #: the report's section on what the command wrote: its title, and the markdown file of its
+    #: ``outputs`` the report shows (``harness/report_folder.py``); none: not shown
+    report_title: str = ""
+    report_markdown: str = ""

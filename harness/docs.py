@@ -36,7 +36,7 @@ from .diff import EXPLAINED_BY, count_cells
 
 BLOCK = re.compile(r"(<!-- generated: (?P<name>[^>]+?) -->\n)(?P<body>.*?)(<!-- end generated -->)", re.S)
 PAGES = ("README.md", "docs/*.md")
-EXPLAIN = ("explain", "ali1977-table1", "160", "src_dx")
+EXPLAIN = ("explain", "ali1977-table1", "160", "src_dx", "--run")
 
 
 def pages(root: Path) -> list[Path]:

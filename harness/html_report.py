@@ -1,31 +1,39 @@
-"""``out/report.html``: the run's report as one self-contained page (inline style, script and
-figures; nothing fetched when it is viewed), rendered with Jinja2 from ``templates/report.html.j2``.
+"""``report.html``: an output folder's report as one self-contained page (inline style, script and
+figures; nothing fetched when it is viewed), rendered with Jinja2 from ``templates/report.html.j2``
+over what ``report_folder.collect`` found in the folder.
 
-Per table scene: the published table in its printed layout, each cell coloured by what it counts as
-for the engine chosen in the page's selector (``diff.classify_cells``: match, explained, unresolved,
-unexplained, not-produced), with the digits it agrees to; a click (or Enter) on a
-cell opens its trail (``harness/trail.py``): every engine's value, the register entries, the
-listing lines.  Then the scene's figures, and an overview of every table and engine
-(``diff.count_cells``, the counts every report shows).
+Per table scene: the published table in its printed layout, its columns headed in words and
+unit, each cell coloured by what it counts as for the engine chosen in the page's selector
+(``diff.classify_cells``: match, explained, unresolved, unexplained, not-produced) with how
+many of its printed digits that engine reproduces; a click (or Enter) on a cell opens its
+trail (``harness/trail.py``): every engine's value, the register entries, the listing lines.
+Per other scene and per command's output: its markdown rendered (markdown-it, CommonMark with
+tables).  Every section's figures with their captions (``figures.caption_of``), and an
+overview of every table and engine (``diff.count_cells``, the counts every report shows).
 """
 from __future__ import annotations
 
 import base64
 import json
 import math
-from pathlib import Path
+from pathlib import Path, PurePosixPath
+from typing import TYPE_CHECKING
 
 import jinja2
 import pandas as pd
+from markdown_it import MarkdownIt
+from PIL import Image
 
-from . import listing_lines, register as register_mod
-from .diff import CLASSES, COUNT_COLUMNS, classify_cells, count_cells, headline, total_counts
+from . import figures as figures_mod, listing_lines, register as register_mod
+from .diff import CLASSES, COUNT_COLUMNS, classify_cells, headline
 from .engines import ENGINES
 from .register import Deviation
 from .report import heading
-from .scene import Outcome
 from .scenes import SCENES, TABLES
-from .trail import printed_digits, published_source, read_diff
+from .trail import digits_reproduced, printed_digits, published_source, read_diff
+
+if TYPE_CHECKING:
+    from .report_folder import Folder, OutputSection, SceneSection
 
 TEMPLATES = Path(__file__).resolve().parent / "templates"
 #: tagged src edits shown per register entry (the rest are counted)
@@ -40,6 +48,23 @@ def data_uri(path: Path) -> str:
     """A PNG or SVG file as a ``data:`` URI, for an ``<img>`` that needs no other file."""
     kind = "image/svg+xml" if path.suffix == ".svg" else "image/png"
     return f"data:{kind};base64," + base64.b64encode(path.read_bytes()).decode("ascii")
+
+
+def markdown_html(text: str, base: PurePosixPath = PurePosixPath(".")) -> str:
+    """Markdown as HTML (CommonMark and tables; raw HTML escaped).  Images are left out (a
+    section shows its figures with their captions); a relative link is made relative to the
+    report's folder (``base``: the markdown's folder there)."""
+    md = MarkdownIt("commonmark", {"html": False}).enable("table")
+    md.renderer.rules["image"] = lambda tokens, idx, options, env: ""
+
+    def link_open(tokens, idx, options, env):
+        href = tokens[idx].attrGet("href") or ""
+        if href and not href.startswith(("#", "/")) and ":" not in href.split("/")[0]:
+            tokens[idx].attrSet("href", (base / href).as_posix())
+        return md.renderer.renderToken(tokens, idx, options, env)
+
+    md.renderer.rules["link_open"] = link_open
+    return md.render(text)
 
 
 def _line(line: listing_lines.ListingLine) -> dict:
@@ -58,10 +83,15 @@ def _number(value: float) -> str | None:
     return None if math.isnan(value) else f"{value:.9g}"
 
 
+def _column_head(scene, column: str) -> dict:
+    what = scene.describe(column)
+    return {"id": column, "words": what.words, "unit": what.unit}
+
+
 def table_view(scene, diff: pd.DataFrame, register: dict[str, Deviation], blocks: dict, cells: dict) -> dict:
-    """The published table as printed (rows, columns, what each cell counts as per engine:
-    CELL_STATUSES) for the template; each cell's trail data goes into ``cells`` and its listing
-    lines into ``blocks``."""
+    """The published table as printed (rows, columns in words and unit, what each cell counts
+    as per engine: CELL_STATUSES, and the printed digits each engine reproduces) for the
+    template; each cell's trail data goes into ``cells`` and its listing lines into ``blocks``."""
     key = scene.key_name
     classes = classify_cells(diff, register)
     diff = diff.assign(shown=classes["count"].map(lambda c: SHOWN.get(c, c)), kind=classes["kind"])
@@ -74,26 +104,29 @@ def table_view(scene, diff: pd.DataFrame, register: dict[str, Deviation], blocks
             if here.empty:
                 continue
             first = here.iloc[0]
+            text = str(first["published_text"])
+            printed = printed_digits(text)
             engines = {}
             for r in here.itertuples(index=False):
                 ids = r.register_ids if isinstance(r.register_ids, str) else ""
                 engines[r.engine] = {"status": r.shown, "kind": r.kind, "value": _number(float(r.value)),
                                      "difference": _number(float(r.abs_diff)),
-                                     "digits": None if math.isnan(r.digits) else min(float(r.digits), 99.0),
+                                     "digits": digits_reproduced(float(r.abs_diff), float(r.half_unit), printed),
                                      "ids": ids.split()}
             cell_id = f"{scene.name}|{row_key}|{column}"
             lines = tuple(line for s in scene.statements(str(first[key]), column) for line in listing_lines.find(s))
             block = blocks.setdefault(lines, f"L{len(blocks)}")
             cells[cell_id] = {"scene": scene.name, "row": row_key, "column": column,
-                              "published": str(first["published_text"]), "half_unit": float(first["half_unit"]),
-                              "printed_digits": printed_digits(str(first["published_text"])),
+                              "words": scene.describe(column).label, "published": text,
+                              "half_unit": float(first["half_unit"]), "printed_digits": printed,
                               "engines": engines, "lines": block}
-            shown.append({"id": cell_id, "text": str(first["published_text"]),
+            shown.append({"id": cell_id, "text": text, "printed": printed, "column": column,
                           "status": {e: v["status"] for e, v in engines.items()},
                           "digits": {e: v["digits"] for e, v in engines.items()}})
         rows.append({"key": row_key, "cells": shown})
-    return {"key": key, "columns": [c for c in scene.values if c in set(diff["column"])], "rows": rows,
-            "source": published_source(scene.table)}
+    keys = [_column_head(scene, k) for k in scene.keys]
+    return {"key_heads": keys, "columns": [_column_head(scene, c) for c in scene.values if c in set(diff["column"])],
+            "rows": rows, "source": published_source(scene.table)}
 
 
 def overview(counts: pd.DataFrame) -> list[dict]:
@@ -104,42 +137,61 @@ def overview(counts: pd.DataFrame) -> list[dict]:
 
 
 def figures(folder: Path) -> list[dict]:
-    """Every figure a scene wrote (PNG or SVG), inline."""
-    return [{"name": p.name, "uri": data_uri(p)} for p in sorted(folder.glob("*.png")) + sorted(folder.glob("*.svg"))]
+    """Every figure in ``folder`` (PNG), inline, in the order of its file names, with its caption
+    (``figures.caption_of``; a figure written without one is named by its file) and its size in
+    CSS pixels (shown at its natural size: ``harness/figures.py``)."""
+    shown = []
+    for path in sorted(Path(folder).glob("*.png")):
+        with Image.open(path) as image:
+            width, height = image.size
+        shown.append({"name": path.name, "uri": data_uri(path), "width": width, "height": height,
+                      "caption": figures_mod.caption_of(path) or path.stem.replace("_", " ")})
+    return shown
 
 
-def render(out_dir: Path, done: list[Outcome], bench_dir: Path | None = None) -> str:
-    """The page's HTML for the scenes of ``done`` (written in ``out_dir``)."""
+def _scene_view(folder: "Folder", section: "SceneSection", register, blocks, cells) -> dict:
+    view = {"kind": "scene", "name": section.name, "title": section.title, "problem": section.problem,
+            "outcome": section.outcome, "figures": [], "table": None, "overview": "", "counts": []}
+    if section.outcome is None:
+        return view
+    here = folder.out_dir / section.name
+    view["figures"] = figures(here) if here.is_dir() else []
+    if section.name in TABLES and (here / "diff.csv").is_file():
+        diff = read_diff(TABLES[section.name], folder.out_dir)
+        view["table"] = table_view(SCENES[section.name], diff, register, blocks, cells)
+        if section.outcome.counts is not None:
+            view["counts"] = overview(section.outcome.counts)
+        view["used"] = {i for ids in diff["register_ids"].fillna("") for i in str(ids).split()}
+    else:
+        view["overview"] = markdown_html("\n".join(section.outcome.overview))
+    return view
+
+
+def _output_view(folder: "Folder", section: "OutputSection") -> dict:
+    view = {"kind": "output", "name": section.name, "title": section.title, "present": section.present,
+            "command": section.command, "html": "", "figures": []}
+    if section.present:
+        text = section.markdown.read_text()
+        body = text.split("\n", 1)[1] if text.startswith("# ") else text      # the section has its heading
+        view["html"] = markdown_html(body, PurePosixPath(section.folder.relative_to(folder.out_dir).as_posix()))
+        view["figures"] = figures(section.folder)
+    return view
+
+
+def render(folder: "Folder") -> str:
+    """The page's HTML over what ``folder`` holds (``report_folder.collect``)."""
     register = register_mod.load()
     blocks: dict[tuple, str] = {}
     cells: dict[str, dict] = {}
-    scenes, used, counted = [], set(), []
-    for item in done:
-        scene, folder = SCENES[item.scene], out_dir / item.scene
-        view = {"name": item.scene, "title": item.title, "seconds": item.seconds, "failures": item.failures,
-                "overview": item.overview, "figures": figures(folder) if folder.is_dir() else [], "table": None}
-        if item.scene in TABLES and (folder / "diff.csv").is_file():
-            diff = read_diff(TABLES[item.scene], out_dir)
-            view["table"] = table_view(scene, diff, register, blocks, cells)
-            counted.append(count_cells(diff, register))
-            view["counts"] = overview(counted[-1])
-            used |= {i for ids in diff["register_ids"].fillna("") for i in str(ids).split()}
-        scenes.append(view)
-    bench = figures(bench_dir) if bench_dir is not None and bench_dir.is_dir() else []
+    sections = [_scene_view(folder, s, register, blocks, cells) if s.kind == "scene" else _output_view(folder, s)
+                for s in folder.sections]
+    used = set().union(*(s.get("used", set()) for s in sections))
     env = jinja2.Environment(loader=jinja2.FileSystemLoader(TEMPLATES), autoescape=True,
                              undefined=jinja2.StrictUndefined, trim_blocks=True, lstrip_blocks=True)
     return env.get_template("report.html.j2").render(
-        scenes=scenes, engines=ENGINES, statuses=CELL_STATUSES,
-        columns=[(c, heading(c)) for c in COUNT_COLUMNS], total=headline(total_counts(counted), by_kind=True),
+        sections=sections, absent=folder.absent, out_dir=str(folder.out_dir), engines=ENGINES,
+        statuses=CELL_STATUSES, columns=[(c, heading(c)) for c in COUNT_COLUMNS],
+        total=headline(folder.cell_totals(), by_kind=True),
         entries=[_entry(register[i]) for i in sorted(used) if i in register],
         blocks={block: [_line(line) for line in lines] for lines, block in blocks.items()},
-        cells_json=json.dumps(cells, separators=(",", ":")).replace("</", "<\\/"),
-        bench=bench, bench_dir=str(bench_dir) if bench_dir else "")
-
-
-def write(out_dir: Path, done: list[Outcome], bench_dir: Path | None = None) -> Path:
-    """Write ``out_dir/report.html``; returns its path."""
-    path = Path(out_dir) / "report.html"
-    path.write_text(render(Path(out_dir), done, bench_dir))
-    return path
-
+        cells_json=json.dumps(cells, separators=(",", ":")).replace("</", "<\\/"))

@@ -12,11 +12,10 @@ from queue import Empty
 
 import pandas as pd
 
-from . import html_report, progress, readings
-from .diff import headline, total_counts
-from .report import COUNTS_WORDS
+from . import progress, readings, report_folder
+from .diff import total_counts
 from .scene import Outcome, RunOptions
-from .scenes import SCENES, TABLES, get, report_links
+from .scenes import SCENES, TABLES, get
 
 
 class OutputFolderError(OSError):
@@ -30,7 +29,7 @@ class RunFailedError(RuntimeError):
     def __init__(self, failures: list[str], done: list[dict], out_dir: Path):
         self.failures, self.done = failures, done
         more = f"; {len(failures)} failures in all" if len(failures) > 1 else ""
-        super().__init__(f"{failures[0]} (the other results are written{more}: see {out_dir / 'report.md'})")
+        super().__init__(f"{failures[0]} (the other results are written{more}: see {out_dir / 'report.html'})")
 
 
 def check_output_folder(out_dir: Path, names: list[str]) -> None:
@@ -73,7 +72,10 @@ def _groups(names: list[str]) -> list[list[str]]:
 
 
 def _run_item(name: str, out_dir: Path, options: RunOptions) -> Outcome:
-    return get(name).write(out_dir, options)
+    """Run one scene; keep its outcome in its folder (``outcome.json``) for the folder's report."""
+    outcome = get(name).write(out_dir, options)
+    outcome.save(out_dir)
+    return outcome
 
 
 def _run_group(names: list[str], out_dir: Path, options: RunOptions) -> dict:
@@ -151,14 +153,14 @@ def _run_groups(groups: list[list[str]], out_dir: Path, options: RunOptions) -> 
 
 
 def reproduce(names: list[str] | None, out_dir: Path, measure_readings: bool = True) -> list[Outcome]:
-    """Run the named scenes (all by default; ``linkrepro scenes`` lists them) and write
-    DIR/report.md over them.  The scenes of a group run in one process, the groups side by
+    """Run the named scenes (all by default; ``linkrepro scenes`` lists them) into DIR.  The scenes of a group run in one process, the groups side by
     side on the cores; a progress line on standard error when it is a terminal.
 
     Before any work: ``OutputFolderError`` if DIR cannot be written, ``readings.CompilerError``
     if the OCR readings need gfortran and it is missing (``measure_readings=False`` skips
-    them).  DIR/report.html is the same report as one page (``harness/html_report.py``), with
-    ``linkrepro bench``'s figures where DIR/bench holds them.  After the run, if an engine could
+    them).  Each scene's outcome is kept in its folder, and DIR/report.md and DIR/report.html
+    show every scene run into DIR, this run's and earlier ones', with the outputs of the other
+    commands found there (``harness/report_folder.py``).  After the run, if an engine could
     not run: ``RunFailedError`` (everything else is written, the failures are in the reports)."""
     names = list(dict.fromkeys(names or SCENES))
     out_dir = Path(out_dir)
@@ -171,21 +173,8 @@ def reproduce(names: list[str] | None, out_dir: Path, measure_readings: bool = T
         results = _run_groups(_groups(names), out_dir, RunOptions(measure_readings))
     done = [results[name] for name in names]
     failures = [f"{item.scene}: {failure}" for item in done for failure in item.failures]
-    lines = ["# linkrepro: reproduction report", "",
-             f"The published cells of every table below, once per engine: "
-             f"{headline(cell_totals(done), by_kind=True)}.", "",
-             "Each published cell is counted once per engine. " + COUNTS_WORDS + " The register is "
-             "harness/deviations.toml.", ""]
-    for item in done:
-        lines += [f"## [{item.scene}]({item.scene}/report.md)", "", item.title, "", *item.overview, "",
-                  f"Wall time {item.seconds:.2f} s.", ""]
-        lines += [f"**{f}**\n" for f in item.failures]
-    lines += report_links(out_dir)                    # outputs of other commands, where written
-    if failures:
-        lines += ["## Failures", "", *[f"- **{failure}**" for failure in failures], ""]
-    lines.append(f"Total wall time of this reproduce run: {time.perf_counter() - start:.2f} s.")
-    (out_dir / "report.md").write_text("\n".join(lines) + "\n")
-    html_report.write(out_dir, done, out_dir / "bench")
+    report_folder.write(out_dir, f"The latest reproduce run ({len(names)} of {len(SCENES)} scenes) took "
+                                 f"{time.perf_counter() - start:.2f} s.")
     if failures:
         raise RunFailedError(failures, done, out_dir)
     return done

@@ -20,8 +20,11 @@ scenes themselves live in ``harness/scenes/<thesis>/``; the runner names none of
 """
 from __future__ import annotations
 
+import json
+import os
 import time
 from dataclasses import dataclass, field
+from datetime import datetime, timezone
 from pathlib import Path
 from typing import Any, Callable, Protocol
 
@@ -39,13 +42,46 @@ class RunOptions:
 @dataclass
 class Outcome:
     """What a scene's run gives the run's report: markdown lines under its heading, its wall
-    time (s), the cells per engine (table scenes: ``diff.count_cells``), what could not run."""
+    time (s), the cells per engine (table scenes: ``diff.count_cells``), what could not run,
+    when it finished (UTC, ISO 8601).  Kept in the scene's folder as ``outcome.json``
+    (``save``, ``load``), so that the folder's report shows every scene run into it."""
     scene: str
     title: str
     overview: list[str]
     seconds: float
     counts: pd.DataFrame | None = None
     failures: list[str] = field(default_factory=list)
+    finished: str = field(default_factory=lambda: datetime.now(timezone.utc).isoformat(timespec="seconds"))
+
+    FILE = "outcome.json"
+
+    def save(self, out_dir: Path) -> Path:
+        """Write ``out_dir/<scene>/outcome.json`` (whole or not at all: a temporary file renamed)."""
+        path = Path(out_dir) / self.scene / self.FILE
+        record = {"scene": self.scene, "title": self.title, "overview": self.overview, "seconds": self.seconds,
+                  "failures": self.failures, "finished": self.finished,
+                  "counts": None if self.counts is None else json.loads(self.counts.to_json(orient="split"))}
+        temporary = path.with_name(f".{self.FILE}.{os.getpid()}")
+        temporary.write_text(json.dumps(record, indent=1))
+        os.replace(temporary, path)
+        return path
+
+    @classmethod
+    def load(cls, out_dir: Path, scene: str) -> "Outcome":
+        """The outcome a run saved for ``scene`` in ``out_dir``; ``FileNotFoundError`` where there is
+        none, ``ValueError`` where it cannot be read."""
+        path = Path(out_dir) / scene / cls.FILE
+        try:
+            record = json.loads(path.read_text())
+            counts = record["counts"]
+            return cls(record["scene"], record["title"], list(record["overview"]), float(record["seconds"]),
+                       None if counts is None else pd.DataFrame(counts["data"], index=counts["index"],
+                                                                columns=counts["columns"]),
+                       list(record["failures"]), str(record["finished"]))
+        except FileNotFoundError:
+            raise
+        except (OSError, ValueError, KeyError, TypeError) as exc:
+            raise ValueError(f"{path} cannot be read ({type(exc).__name__}: {exc}); run the scene again") from exc
 
 
 class Scene(Protocol):

@@ -58,6 +58,17 @@ def printed_digits(text: str) -> int:
     return len(mantissa.lstrip("0")) or 1
 
 
+def digits_reproduced(difference: float, half_unit: float, printed: int) -> int | None:
+    """How many of the ``printed`` significant digits a value reproduces: the most k <= printed
+    such that |value - published| is within half a unit of the k-th digit (a matched cell: all
+    of them; a wrong sign: 0).  None where the engine gives no value."""
+    if math.isnan(difference):
+        return None
+    if difference <= half_unit * (1.0 + 1e-9):
+        return printed
+    return max(0, printed - math.ceil(math.log10(difference / half_unit) - 1e-9))
+
+
 def published_source(table: str) -> str:
     """The published CSV's first comment: where the thesis prints the table (seed lines)."""
     for line in (PUBLISHED_DIR / f"{table}.csv").read_text().splitlines():

@@ -24,12 +24,6 @@ def get(name: str) -> Scene:
         raise KeyError(f"unknown scene {name!r}; known: {', '.join(SCENES)}") from None
 
 
-def report_links(out_dir) -> list[str]:
-    """The run report's lines about outputs of other commands (a thesis's ``report_links``,
-    where it has one: ``linkrepro arithmetic``'s matrix for Rahman 1996)."""
-    return [line for thesis in THESES for line in getattr(thesis, "report_links", lambda _: [])(out_dir)]
-
-
 def hook_modules(hook: str) -> list:
     """Each thesis's ``<hook>`` module (``bench``: its part of ``linkrepro bench``, see
     ``harness/bench.py``; ``fuzz``: its entry points, ``harness/fuzz_calls.py``; ``commands``: its
@@ -49,6 +43,12 @@ def hook_modules(hook: str) -> list:
 def commands() -> list:
     """Every thesis's own commands (``COMMANDS`` of its ``commands`` module)."""
     return [command for module in hook_modules("commands") for command in module.COMMANDS]
+
+
+def commands_of(thesis) -> list:
+    """One thesis's own commands (a module of ``THESES``)."""
+    return [command for module in hook_modules("commands") if module.__name__.rpartition(".")[0] == thesis.__name__
+            for command in module.COMMANDS]
 
 
 def _bench_hook(hook: str, quick: bool) -> list:

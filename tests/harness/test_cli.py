@@ -185,7 +185,7 @@ def test_missing_printed_program_in_reproduce(tmp_path):
     empty.mkdir()
     out = tmp_path / "out"
     done = run("reproduce", FAST_SCENE, "--out", str(out), cwd=tmp_path, env=_env(**{BIN_ENV: str(empty)}))
-    error_line(done, 1, "rahman1996_cssp_main", "not built", str(empty), "report.md")
+    error_line(done, 1, "rahman1996_cssp_main", "not built", str(empty), "report.html")
     assert (out / FAST_SCENE / "legacy.csv").exists() and not (out / FAST_SCENE / "printed.csv").exists()
     assert "rahman1996_cssp_main" in (out / "report.md").read_text()
     assert "legacy" in done.stdout                   # the counts are still printed

@@ -170,8 +170,8 @@ def test_the_run_has_unresolved_cells(expected):
 def test_cli_lines_are_the_counts(fresh, expected):
     out, lines = fresh
     total = expected[list(COUNT_COLUMNS)].sum(axis=0)
-    assert lines[-1] == f"report: {out / 'report.md'}  ({headline(total)})"
-    shown = _adds_up(lines[-1].split("  (", 1)[1][:-1])
+    assert lines[-1] == f"report: {out / 'report.html'} and report.md  (1 scene; {headline(total)})"
+    shown = _adds_up(lines[-1].split("; ", 1)[1][:-1])
     assert shown == {c: int(total[c]) for c in ("cells", *CLASSES)}
     assert lines[0] == f"{SCENE}:"
     for engine, line in zip(expected.index, lines[1:-1], strict=True):

@@ -160,10 +160,3 @@ def test_every_variant_is_named_once_and_says_what_it_stands_for():
     assert names[0] == "reference" and len(names) == len(set(names))
     assert all(v.machine for v in V.VARIANTS)
     assert replace(V.get("O2"), extra=()).flags == V.REFERENCE_FLAGS
-
-
-def test_reproduce_links_the_measurement_only_when_it_is_there(tmp_path):
-    assert "linkrepro arithmetic --out" in A.report_link(tmp_path)[2]
-    (tmp_path / "arithmetic").mkdir()
-    (tmp_path / "arithmetic" / "arithmetic.md").write_text("# x\n")
-    assert "(arithmetic/arithmetic.md)" in A.report_link(tmp_path)[0]

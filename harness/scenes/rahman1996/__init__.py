@@ -2,8 +2,7 @@
 Figures 5.1-5.6 with section 5.3's percentages."""
 from .figures import SCENE as FIGURES
 from .tables import TABLES
-from .arithmetic import report_link as report_links
 from .quantities import QUANTITIES
 
 SCENES = [*TABLES, FIGURES]
-__all__ = ["SCENES", "TABLES", "FIGURES", "report_links", "QUANTITIES"]
+__all__ = ["SCENES", "TABLES", "FIGURES", "QUANTITIES"]

@@ -42,7 +42,7 @@ COMMAND = "linkrepro arithmetic --out out/arithmetic"
 OUTPUTS = ("arithmetic.csv", "arithmetic_cells.csv", "arithmetic.md")
 
 __all__ = ["TABLES", "SERIES", "COMMAND", "OUTPUTS", "ReferenceFailed", "cell_frame", "count_frame",
-           "meets_criterion", "report_link", "as_markdown", "write"]
+           "meets_criterion", "as_markdown", "write"]
 
 
 def _published(table: str) -> PublishedTable:
@@ -142,18 +142,6 @@ def meets_criterion(counts: pd.DataFrame) -> dict[str, bool]:
         out[name] = bool(part["documented"].iloc[0]
                          and all(gain[t.replace("_", ".")] > 0 for t in SERIES) and gain["5.1"] >= 0)
     return out
-
-
-def report_link(out_dir: Path) -> list[str]:
-    """Lines for reproduce's report.md when ``linkrepro arithmetic`` has written DIR/arithmetic/."""
-    if not (Path(out_dir) / "arithmetic" / "arithmetic.md").is_file():
-        return ["## Which digits survive a change of arithmetic", "",
-                f"Not measured in this run: `linkrepro arithmetic --out {Path(out_dir) / 'arithmetic'}` rebuilds "
-                "Rahman (1996) Tables 5.1-5.7 under the arithmetics of 1996 machines (about 20 s of CPU; "
-                "`make reproduce` runs it) and this report then links its matrix (register D056).", ""]
-    return ["## [Which digits survive a change of arithmetic](arithmetic/arithmetic.md)", "",
-            "Rahman (1996) Tables 5.1-5.7 rebuilt under the arithmetics of 1996 machines, per variant "
-            "and per cell (written by `linkrepro arithmetic`; register D056).", ""]
 
 
 def _closest(m: Measurement, counts: pd.DataFrame) -> str:

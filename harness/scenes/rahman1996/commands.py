@@ -17,4 +17,6 @@ COMMANDS = [Command(
     outputs=OUTPUTS,
     run=lambda args: write(args.out)[3],
     failures=(CompilerError, ReferenceFailed),
+    report_title="Rahman (1996): which digits survive a change of arithmetic",
+    report_markdown="arithmetic.md",
 )]

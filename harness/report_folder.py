@@ -1,0 +1,158 @@
+"""An output folder is one report: ``report.md`` and ``report.html`` over everything run into it.
+
+Every scene's run leaves ``<scene>/outcome.json`` in the folder (``scene.Outcome.save``); the
+bench and each thesis's own commands leave their markdown in their folder (``bench/bench.md``,
+``arithmetic/arithmetic.md``).  ``collect`` gathers what the folder holds, in the order of the
+theses (each thesis's scenes as it lists them, then its commands' outputs; the bench last), and
+names what is not there with the command that writes it.  ``write`` writes both reports from
+that, each whole or not at all (a temporary file renamed), so a run of one scene updates its
+section and keeps the others, and a report that cannot be built leaves the last one in place.
+"""
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import pandas as pd
+
+from .diff import headline, total_counts
+from .report import COUNTS_WORDS
+from .scene import Outcome
+from .scenes import SCENES, THESES, commands_of
+
+#: the report's two files in the folder
+FILES = ("report.md", "report.html")
+
+
+@dataclass(frozen=True)
+class SceneSection:
+    """A scene of the registry: its outcome where the folder holds one, else why not."""
+    kind = "scene"
+    name: str
+    title: str
+    outcome: Outcome | None
+    problem: str = ""                   # '' or why outcome.json could not be read
+
+
+@dataclass(frozen=True)
+class OutputSection:
+    """What a command other than ``reproduce`` writes into ``<folder>/<subfolder>/``."""
+    kind = "output"
+    name: str                           # the section's id (its subfolder's name)
+    title: str
+    folder: Path                        # where the command writes
+    markdown: Path                      # its report (shown where it exists)
+    command: str                        # the command line that writes it there
+
+    @property
+    def present(self) -> bool:
+        return self.markdown.is_file()
+
+
+@dataclass(frozen=True)
+class Folder:
+    """What an output folder holds, in the report's order."""
+    out_dir: Path
+    sections: list                      # SceneSection (run or unreadable) and OutputSection
+    absent: list[SceneSection] = field(default_factory=list)     # scenes not run into it
+
+    @property
+    def outcomes(self) -> list[Outcome]:
+        return [s.outcome for s in self.sections if isinstance(s, SceneSection) and s.outcome is not None]
+
+    def cell_totals(self) -> pd.Series:
+        """Every table scene's cells over every engine (``diff.total_counts``)."""
+        return total_counts([o.counts for o in self.outcomes if o.counts is not None])
+
+
+def _bench(out_dir: Path) -> OutputSection:
+    folder = out_dir / "bench"
+    return OutputSection("bench", "Speed against error (linkrepro bench)", folder, folder / "bench.md",
+                         f"linkrepro bench --out {folder}")
+
+
+def _command(out_dir: Path, command) -> OutputSection:
+    folder = out_dir / command.default_out.name
+    return OutputSection(command.default_out.name, command.report_title, folder, folder / command.report_markdown,
+                         f"linkrepro {command.name} --out {folder}")
+
+
+def _scene_section(out_dir: Path, name: str) -> SceneSection:
+    scene = SCENES[name]
+    try:
+        return SceneSection(name, scene.title, Outcome.load(out_dir, name))
+    except FileNotFoundError:
+        return SceneSection(name, scene.title, None)
+    except ValueError as exc:
+        return SceneSection(name, scene.title, None, str(exc))
+
+
+def collect(out_dir: Path) -> Folder:
+    """What ``out_dir`` holds: scenes run into it (or unreadable), the commands' outputs (present
+    or not), in the report's order; the scenes not run into it apart."""
+    out_dir = Path(out_dir)
+    sections, absent = [], []
+    for thesis in THESES:
+        for scene in thesis.SCENES:
+            section = _scene_section(out_dir, scene.name)
+            (sections if section.outcome is not None or section.problem else absent).append(section)
+        sections += [_command(out_dir, command) for command in commands_of(thesis) if command.report_markdown]
+    return Folder(out_dir, sections + [_bench(out_dir)], absent)
+
+
+def _scene_lines(section: SceneSection) -> list[str]:
+    if section.outcome is None:
+        return [f"## {section.name}", "", section.title, "", f"**{section.problem}**", ""]
+    o = section.outcome
+    lines = [f"## [{o.scene}]({o.scene}/report.md)", "", o.title, "", *o.overview, "",
+             f"Run {o.finished}, wall time {o.seconds:.2f} s.", ""]
+    return lines + [f"**{failure}**\n" for failure in o.failures]
+
+
+def _output_lines(section: OutputSection, out_dir: Path) -> list[str]:
+    if section.present:
+        return [f"## [{section.title}]({section.markdown.relative_to(out_dir).as_posix()})", ""]
+    return [f"## {section.title}", "", f"Not in this folder: `{section.command}` writes it.", ""]
+
+
+def markdown(folder: Folder, latest: str = "") -> str:
+    """report.md: the headline over the folder's tables, each section, the scenes not run."""
+    lines = ["# linkrepro: reproduction report", "",
+             f"The published cells of every table below, once per engine: "
+             f"{headline(folder.cell_totals(), by_kind=True)}.", "",
+             "Each published cell is counted once per engine. " + COUNTS_WORDS + " The register is "
+             "harness/deviations.toml.", ""]
+    if latest:
+        lines += [latest, ""]
+    for section in folder.sections:
+        lines += _scene_lines(section) if isinstance(section, SceneSection) else _output_lines(section, folder.out_dir)
+    failures = [f"{o.scene}: {f}" for o in folder.outcomes for f in o.failures]
+    if failures:
+        lines += ["## Failures", "", *[f"- **{failure}**" for failure in failures], ""]
+    if folder.absent:
+        lines += ["## Not run into this folder", "",
+                  f"`linkrepro reproduce NAME --out {folder.out_dir}` runs one: "
+                  + ", ".join(s.name for s in folder.absent) + ".", ""]
+    return "\n".join(lines) + "\n"
+
+
+def _replace(path: Path, text: str) -> None:
+    temporary = path.with_name(f".{path.name}.{os.getpid()}.tmp")
+    try:
+        temporary.write_text(text)
+        os.replace(temporary, path)
+    finally:
+        temporary.unlink(missing_ok=True)
+
+
+def write(out_dir: Path, latest: str = "") -> Path:
+    """Write ``out_dir/report.md`` and ``report.html`` over what the folder holds (``latest``: a
+    line on the run that just ended); returns report.html's path."""
+    from . import html_report
+    out_dir = Path(out_dir)
+    folder = collect(out_dir)
+    page = html_report.render(folder)
+    _replace(out_dir / "report.md", markdown(folder, latest))
+    _replace(out_dir / "report.html", page)
+    return out_dir / "report.html"
