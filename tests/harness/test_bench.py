@@ -73,7 +73,9 @@ def test_quick_bench_writes_its_three_files(tmp_path, monkeypatch):
     assert (costs.us_per_position > 0).all() and (costs.flops_per_position > 0).all()
     assert knobs.groupby("subject").pareto.any().all()
     text = (out / "bench.md").read_text()
-    assert text.strip() == stdout.getvalue().strip()
+    printed, last = stdout.getvalue().strip().rsplit("\n", 1)
+    assert text.strip() == printed.strip()     # the markdown, then where it went (not a report folder)
+    assert last.startswith(f"written: {out} ")
     assert "port (bugs) / legacy" in text and "legacy / limit" in text and "bench.png" in text
     assert (out / "bench.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     # the port with the listings' bugs equals legacy on the tables' angles
