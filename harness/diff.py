@@ -65,21 +65,32 @@ def diff_scene(scene: TableScene, published: PublishedTable, results: dict[str, 
         base = results.get("port_printed")
         effects = quirk_effects(scene, published, base if base is not None else scene.port(scene.quirks[0]))
     quirk_ids = {name: entry.id for name, entry in by_quirk(register).items()}
+    claiming = [e for e in register.values() if any(c.scene == scene.name for c in e.cells)]
+    index = pub_val.index                   # every frame read at the published rows' labels
+
+    def at(frame: pd.DataFrame | None, col: str) -> list:
+        if frame is None:
+            return [np.nan] * len(index)
+        return (frame[col] if frame.index.equals(index) else frame.loc[index, col]).to_numpy().tolist()
+
+    keys = (pub_val[scene.key].to_numpy() if isinstance(scene.key, str)
+            else ["/".join(texts) for texts in zip(*(pub_text[k] for k in scene.keys))])
+    targets = {col: at(pub_val, col) for col in scene.values}
+    tols = {col: at(half, col) for col in scene.values}
+    texts = {col: pub_text[col].to_numpy() for col in scene.values}
+    refs = {col: at(legacy, col) for col in scene.values}
+    moves = {q: {col: at(moved, col) for col in scene.values} for q, moved in (effects or {}).items()}
     rows = []
     for engine, frame in results.items():
-        for i in range(len(pub_val)):
-            key = (pub_val.at[i, scene.key] if isinstance(scene.key, str)
-                   else "/".join(pub_text.at[i, k] for k in scene.keys))
+        got = {col: at(frame, col) for col in scene.values}
+        for i, key in enumerate(keys):
             for col in scene.values:
-                value = float(frame.at[i, col])
-                target, tol = float(pub_val.at[i, col]), float(half.at[i, col])
-                ref = float(legacy.at[i, col]) if legacy is not None else np.nan
+                value, target, tol, ref = (float(got[col][i]), float(targets[col][i]), float(tols[col][i]),
+                                           float(refs[col][i]))
                 err = abs(value - target)
-                ids = [e.id for e in register.values()
-                       if any(c.covers(scene.name, key, col, engine) for c in e.cells)]
+                ids = [e.id for e in claiming if any(c.covers(scene.name, key, col, engine) for c in e.cells)]
                 if engine == "port_corrected" and effects is not None:
-                    ids += [quirk_ids[q] for q, moved in effects.items()
-                            if q in quirk_ids and bool(moved.at[i, col])]
+                    ids += [quirk_ids[q] for q, moved in moves.items() if q in quirk_ids and bool(moved[col][i])]
                 if np.isnan(value):
                     status = "not-produced"
                 elif err <= tol * (1.0 + 1e-9):
@@ -92,7 +103,7 @@ def diff_scene(scene: TableScene, published: PublishedTable, results: dict[str, 
                 else:
                     status = "unexplained"
                 rows.append({"scene": scene.name, "engine": engine, scene.key_name: key, "column": col,
-                             "published_text": pub_text.at[i, col], "published": target,
+                             "published_text": texts[col][i], "published": target,
                              "value": value, "abs_diff": err, "digits": agreed_digits(value, target),
                              "half_unit": tol, "status": status,
                              "register_ids": " ".join(sorted(set(ids))) if status != "match" else "",
@@ -152,13 +163,15 @@ def count_cells(diff: pd.DataFrame, register: dict[str, Deviation]) -> pd.DataFr
     (EXPLAINED_BY: a cell explained by entries of several kinds counts once, under SEVERAL)."""
     classes = classify_cells(diff, register)
     engines = diff["engine"] if not diff.empty else pd.Series(dtype=str)
-    frame = pd.DataFrame(0, index=pd.Index(list(dict.fromkeys(engines)), name="engine"),
-                         columns=list(COUNT_COLUMNS), dtype=int)
+    tally = {engine: dict.fromkeys(COUNT_COLUMNS, 0) for engine in dict.fromkeys(engines)}
     for engine, count, kind in zip(engines, classes["count"], classes["kind"]):
-        frame.at[engine, "cells"] += 1
-        frame.at[engine, count] += 1
+        row = tally[engine]
+        row["cells"] += 1
+        row[count] += 1
         if kind:
-            frame.at[engine, kind] += 1
+            row[kind] += 1
+    frame = pd.DataFrame([list(row.values()) for row in tally.values()] or None,
+                         index=pd.Index(list(tally), name="engine"), columns=list(COUNT_COLUMNS), dtype=int)
     assert (frame["cells"] == frame[list(CLASSES)].sum(axis=1)).all()
     assert (frame["explained"] == frame[list(EXPLAINED_BY)].sum(axis=1)).all()
     return frame

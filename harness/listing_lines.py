@@ -92,12 +92,17 @@ def line(tier: str, file: str, number: int) -> ListingLine:
 def find(statement: Statement) -> list[ListingLine]:
     """Every line of the statement's listing that its pattern matches, with the continuation
     cards that follow it (a character other than blank or 0 in column 6)."""
+    return list(_found(statement))
+
+
+@lru_cache(maxsize=None)
+def _found(statement: Statement) -> tuple[ListingLine, ...]:
     pattern, cards = re.compile(statement.pattern), text(statement.tier, statement.file)
     numbers = []
     for n, card in enumerate(cards, 1):
         if pattern.search(card) or (numbers and numbers[-1] == n - 1 and _continues(card)):
             numbers.append(n)
-    return [line(statement.tier, statement.file, n) for n in numbers]
+    return tuple(line(statement.tier, statement.file, n) for n in numbers)
 
 
 def _continues(card: str) -> bool:

@@ -21,13 +21,12 @@ is skipped, and the report says so.
 from __future__ import annotations
 
 import shutil
-import tomllib
 from pathlib import Path
 from typing import Any
 
 import pandas as pd
 
-from .register import REGISTER_PATH
+from .register import REGISTER_PATH, parsed
 
 PRINTED_DIR = Path(__file__).resolve().parent.parent / "legacy" / "printed"
 SRC_DIR = PRINTED_DIR.parent / "src"
@@ -42,8 +41,7 @@ class CompilerError(RuntimeError):
 
 def entries() -> list[dict]:
     """Every register entry (as the TOML holds it)."""
-    with open(REGISTER_PATH, "rb") as fh:
-        return tomllib.load(fh).get("deviation", [])
+    return parsed(REGISTER_PATH).get("deviation", [])
 
 
 def tables_of(entry: dict, driver: Any) -> tuple[str, ...]:

@@ -11,11 +11,13 @@ every check).
 """
 from __future__ import annotations
 
+import copy
 import re
 import shlex
 import tomllib
 from dataclasses import dataclass, field
 from decimal import Decimal, InvalidOperation, ROUND_HALF_EVEN
+from functools import lru_cache
 from pathlib import Path
 
 REGISTER_PATH = Path(__file__).resolve().parent / "deviations.toml"
@@ -100,10 +102,20 @@ def _check(entry_id: str, raw: dict) -> Check:
     return check
 
 
+def parsed(path: Path = REGISTER_PATH) -> dict:
+    """The register file as TOML data, read now; a fresh copy on every call (the text is
+    parsed once per process for each content it has had: a run reads it in every scene)."""
+    return copy.deepcopy(_parse(Path(path).read_bytes()))
+
+
+@lru_cache(maxsize=4)
+def _parse(data: bytes) -> dict:
+    return tomllib.loads(data.decode())
+
+
 def load(path: Path = REGISTER_PATH) -> dict[str, Deviation]:
     """Read and validate the register; raise ValueError on a malformed entry."""
-    with open(path, "rb") as fh:
-        data = tomllib.load(fh)
+    data = parsed(path)
     entries: dict[str, Deviation] = {}
     for raw in data.get("deviation", []):
         missing = [k for k in REQUIRED if not str(raw.get(k, "")).strip()]

@@ -47,7 +47,7 @@ def test_fuzz_slice_has_no_findings():
     report = fuzz.fuzz(calls=200, seed=0, timeout=PATIENCE)
     assert len(report.results) == 200
     if report.findings:
-        pytest.fail(fuzz.format_findings(report), pytrace=False)
+        pytest.fail(fuzz_runner.format_findings(report), pytrace=False)
 
 
 def test_checks_flag_results_that_break_their_promise():

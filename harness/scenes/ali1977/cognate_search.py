@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import itertools
 import sys
+from functools import lru_cache
 
 import numpy as np
 import pandas as pd
@@ -179,10 +180,19 @@ def columns(case: str, flips=()) -> pd.DataFrame:
                          "cog_xnew": rigid_x + dx, "cog_ynew": rigid_y + dy})
 
 
-def matched(case: str, frame: pd.DataFrame) -> tuple[int, float]:
-    """(cells of the cognate columns within half a unit of the printed digit, worst error)."""
+@lru_cache(maxsize=None)
+def _published(case: str) -> tuple[PublishedTable, np.ndarray]:
+    """The case's published table and its rows at DEG (read once: a search compares hundreds
+    of variants with it)."""
     published = PublishedTable.load(TABLES[case])
     rows = published.values["input_deg"].isin(DEG).to_numpy()
+    rows.flags.writeable = False
+    return published, rows
+
+
+def matched(case: str, frame: pd.DataFrame) -> tuple[int, float]:
+    """(cells of the cognate columns within half a unit of the printed digit, worst error)."""
+    published, rows = _published(case)
     count, worst = 0, 0.0
     for col in COLUMNS:
         matched, err = published.matched(col, frame[col], rows)

@@ -15,6 +15,7 @@ from pathlib import Path
 import pandas as pd
 
 from .printed_output import parse_printed_output
+from ... import build_cache
 from ...published_tables import PublishedTable
 from ...readings import (COMPILE_TIMEOUT_S, COMPILER, FLAGS, PRINTED_DIR, SRC_DIR, CompilerError, first_error, groups,
                          missing_message, put_back)
@@ -64,16 +65,20 @@ def tables_of(program: str) -> tuple[str, ...]:
 
 
 def _compile(src: Path, exe: Path, *extra: Path) -> None:
-    """Build one listing as the printed engine is built.  ``CalledProcessError``: the text
-    does not compile (a scan's literal text may not); ``CompilerError``: gfortran cannot run."""
-    try:
-        subprocess.run([COMPILER, *FLAGS, "-o", str(exe), str(src), *map(str, extra),
-                        *[str(PRINTED_DIR / s) for s in SSP]],
-                       check=True, capture_output=True, text=True, timeout=COMPILE_TIMEOUT_S)
-    except subprocess.TimeoutExpired as exc:
-        raise CompilerError(f"{COMPILER} did not finish building {src.name} in {COMPILE_TIMEOUT_S} s") from exc
-    except OSError as exc:                 # not on PATH any more, not executable, ...
-        raise CompilerError(f"{COMPILER} could not be run: {exc.strerror or exc}") from exc
+    """Build one listing as the printed engine is built (or take that build from the build
+    cache, ``harness/build_cache.py``).  ``CalledProcessError``: the text does not compile (a
+    scan's literal text may not); ``CompilerError``: gfortran cannot run."""
+    inputs = [src, *extra, *[PRINTED_DIR / s for s in SSP]]
+
+    def build() -> None:
+        try:
+            subprocess.run([COMPILER, *FLAGS, "-o", str(exe), *map(str, inputs)],
+                           check=True, capture_output=True, text=True, timeout=COMPILE_TIMEOUT_S)
+        except subprocess.TimeoutExpired as exc:
+            raise CompilerError(f"{COMPILER} did not finish building {src.name} in {COMPILE_TIMEOUT_S} s") from exc
+        except OSError as exc:             # not on PATH any more, not executable, ...
+            raise CompilerError(f"{COMPILER} could not be run: {exc.strerror or exc}") from exc
+    build_cache.executable(build_cache.key(COMPILER, FLAGS, [(p.name, p.read_text()) for p in inputs]), exe, build)
 
 
 def _run_variant(program: str, edits: list[dict], workdir: Path) -> pd.DataFrame:
@@ -86,7 +91,7 @@ def _run_variant(program: str, edits: list[dict], workdir: Path) -> pd.DataFrame
         drivers.append(workdir / "driver.f")
         drivers[0].write_text(DRIVERS[program])
     _compile(src, exe, *drivers)
-    done = subprocess.run([str(exe)], capture_output=True, text=True, timeout=60)
+    done = build_cache.run([str(exe)], capture_output=True, text=True, timeout=60)
     return parse_printed_output(done.stdout).drop_duplicates("deg").set_index("deg")
 
 

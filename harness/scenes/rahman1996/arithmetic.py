@@ -81,10 +81,12 @@ def cell_frame(m: Measurement) -> pd.DataFrame:
                 same = np.array_equal(frame["crank_deg"].to_numpy(float), values["crank_deg"].to_numpy(float))
             if not same:
                 raise ReferenceFailed(f"Table {table}: the rows of variant {name} are not the published rows")
+        rows_at = values.index               # each variant's column at the published rows' labels
+        columns = {(v.name, col): m.values[v.name][table][col].loc[rows_at].tolist() for v in ran for col in cols}
         for i, row in enumerate(names):
             for col in cols:
                 target, tol = float(values.at[i, col]), float(half.at[i, col])
-                got = {v.name: float(m.values[v.name][table].at[i, col]) for v in ran}
+                got = {v.name: float(columns[v.name, col][i]) for v in ran}
                 at = {n: abs(x - target) <= tol * (1.0 + 1e-9) for n, x in got.items()}
                 d = _decimals(tol)
                 printed_as = {n: f"{round(x, d):.{d}f}" for n, x in got.items()}

@@ -1,12 +1,14 @@
 """The arithmetic study's build (``arithmetic.py``): legacy/src (or the listing as printed)
-rebuilt under a variant's flags and source transform in a temporary folder, run by a driver
-that WRITEs every cell of TABLE and INERT in full precision, measured side by side."""
+rebuilt under a variant's flags and source transform in a temporary folder (or taken from the
+build cache, ``harness/build_cache.py``), run by a driver that WRITEs every cell of TABLE and
+INERT in full precision, measured side by side."""
 from __future__ import annotations
 
 import os
 import shutil
 import subprocess
 import tempfile
+import threading
 import time
 from concurrent.futures import ThreadPoolExecutor, as_completed
 from dataclasses import dataclass, field
@@ -16,6 +18,7 @@ from typing import Callable
 import numpy as np
 import pandas as pd
 
+from ... import build_cache
 from ...readings import COMPILE_TIMEOUT_S, COMPILER, PRINTED_DIR, CompilerError, first_error
 from .arithmetic_variants import MAIN, VARIANTS, Variant
 from .table_forms import as_tables
@@ -99,35 +102,56 @@ def _gfortran(flags: tuple[str, ...], args: list[str], workdir: Path) -> None:
         raise CompilerError(f"{COMPILER} could not be run: {exc.strerror or exc}") from exc
 
 
-def prebuild(variant: Variant, names: tuple[str, ...], workdir: Path) -> dict[str, tuple[str, Path, tuple]]:
-    """These files of a variant compiled once to object files with its flags: for
-    ``build_and_run``'s ``prebuilt`` (name: (text, object, flags)).  ``VariantFailed`` if not."""
-    workdir.mkdir(parents=True, exist_ok=True)
-    files = _transformed(variant)
-    for name in names:
-        (workdir / name).write_text(files[name])
-    _gfortran(variant.flags, ["-c", *names], workdir)
-    return {name: (files[name], workdir / (Path(name).stem + ".o"), variant.flags) for name in names}
+class Shared:
+    """Files of a variant (``names``) compiled once with its flags to object files in
+    ``workdir``, when a build first needs them: ``build_and_run`` links them into every variant
+    with the same text of them and the same flags.  ``VariantFailed`` if the variant's source
+    transform fails (at once) or the files do not compile (``objects``)."""
+
+    def __init__(self, variant: Variant, names: tuple[str, ...], workdir: Path):
+        files = _transformed(variant)
+        self.texts, self.flags, self.workdir = {name: files[name] for name in names}, variant.flags, workdir
+        self._objects: dict[str, Path] | None = None
+        self._lock = threading.Lock()
+
+    def objects(self) -> dict[str, Path]:
+        """name: its object file, compiled on the first call."""
+        with self._lock:
+            if self._objects is None:
+                self.workdir.mkdir(parents=True, exist_ok=True)
+                for name, text in self.texts.items():
+                    (self.workdir / name).write_text(text)
+                _gfortran(self.flags, ["-c", *self.texts], self.workdir)
+                self._objects = {name: self.workdir / (Path(name).stem + ".o") for name in self.texts}
+            return self._objects
 
 
-def build_and_run(variant: Variant, workdir: Path, prebuilt: dict[str, tuple[str, Path, tuple]] | None = None) -> str:
-    """Build one variant in ``workdir`` and return its standard output.  A file whose text
-    and flags are those of a ``prebuilt`` object (``prebuild``) is linked from it, not compiled.
-    ``VariantFailed`` if it does not build or run; ``CompilerError`` if gfortran cannot run."""
+def build_and_run(variant: Variant, workdir: Path, shared: Shared | None = None) -> str:
+    """Build one variant in ``workdir`` (or take the build from the build cache,
+    ``harness/build_cache.py``) and return its standard output.  A file whose text and flags
+    are those of ``shared`` is linked from its object file, not compiled.  ``VariantFailed`` if
+    it does not build or run; ``CompilerError`` if gfortran cannot run."""
     workdir.mkdir(parents=True, exist_ok=True)
     files = _transformed(variant)
     order = ["driver.f", MAIN] + [n for n in files if n not in ("driver.f", MAIN)]
     names = [n for n in order if n in files]
-    linked = {n: obj for n, (text, obj, flags) in (prebuilt or {}).items()
-              if files.get(n) == text and flags == variant.flags}
-    for name in names:
-        if name not in linked:
-            (workdir / name).write_text(files[name])
+    linked = [n for n in names if shared is not None and shared.flags == variant.flags
+              and shared.texts.get(n) == files[n]]
+    own = [n for n in names if n not in linked]
     exe = workdir / "cssp"
-    _gfortran(variant.flags, ["-o", str(exe), *[n for n in names if n not in linked],
-                              *[str(linked[n]) for n in names if n in linked]], workdir)
+
+    def build() -> None:
+        for name in own:
+            (workdir / name).write_text(files[name])
+        if own:                                  # a text that does not compile fails here, first
+            _gfortran(variant.flags, ["-c", *own], workdir)
+        objects = shared.objects() if linked else {}
+        _gfortran(variant.flags, ["-o", str(exe), *[Path(n).stem + ".o" for n in own],
+                                  *[str(objects[n]) for n in linked]], workdir)
+    inputs = [(name, files[name]) for name in own] + [(f"{name} (object)", files[name]) for name in linked]
+    build_cache.executable(build_cache.key(COMPILER, variant.flags, inputs), exe, build)
     try:
-        done = subprocess.run([str(exe)], cwd=workdir, capture_output=True, text=True, timeout=RUN_TIMEOUT_S)
+        done = build_cache.run([str(exe)], cwd=workdir, capture_output=True, text=True, timeout=RUN_TIMEOUT_S)
     except subprocess.TimeoutExpired as exc:
         raise VariantFailed(f"did not finish in {RUN_TIMEOUT_S} s") from exc
     if done.returncode != 0:
@@ -181,22 +205,22 @@ def measure(variants: tuple[Variant, ...] | list[Variant] = VARIANTS, workers: i
             shared: tuple[str, ...] = (), on_done: Callable[[str], None] = lambda name: None) -> Measurement:
     """Build and run every variant (side by side on the cores); the first must run
     (``ReferenceFailed`` if not), the others are reported when they fail.  ``shared``: files
-    (e.g. "driver.f") compiled once from the first variant and linked into every variant
-    with the same text of them and the same flags (variants that differ in one file).
-    ``on_done(name)``: called in this thread as each variant is built and run (or fails)."""
+    (e.g. "driver.f") compiled once from the first variant, when a build not in the build cache
+    first needs them, and linked into every variant with the same text of them and the same
+    flags (variants that differ in one file).  ``on_done(name)``: called in this thread as each variant is built and run (or fails)."""
     require_compiler()
     variants = list(variants)
     start = time.perf_counter()
     workers = max(1, min(len(variants), workers or os.cpu_count() or 1))
     with tempfile.TemporaryDirectory(prefix="linkrepro-arith-") as tmp:
         try:
-            prebuilt = prebuild(variants[0], shared, Path(tmp) / ".shared") if shared else None
+            common = Shared(variants[0], shared, Path(tmp) / ".shared") if shared else None
         except VariantFailed as exc:
             raise ReferenceFailed(f"the {variants[0].name} build failed: {exc}") from exc
 
         def one(variant: Variant):
             try:
-                return variant.name, tables_of(parse(build_and_run(variant, Path(tmp) / variant.name, prebuilt)))
+                return variant.name, tables_of(parse(build_and_run(variant, Path(tmp) / variant.name, common)))
             except VariantFailed as exc:
                 return variant.name, str(exc)
         with ThreadPoolExecutor(workers) as pool:
