@@ -50,11 +50,12 @@ def data_uri(path: Path) -> str:
     return f"data:{kind};base64," + base64.b64encode(path.read_bytes()).decode("ascii")
 
 
-def markdown_html(text: str, base: PurePosixPath = PurePosixPath(".")) -> str:
-    """Markdown as HTML (CommonMark and tables; raw HTML escaped).  Images are left out (a
-    section shows its figures with their captions); a relative link is made relative to the
-    report's folder (``base``: the markdown's folder there)."""
-    md = MarkdownIt("commonmark", {"html": False}).enable("table")
+def markdown_html(text: str, base: PurePosixPath = PurePosixPath("."), breaks: bool = False) -> str:
+    """Markdown as HTML (CommonMark and tables; raw HTML escaped; ``breaks``: a line break is
+    kept, as in a scene's overview lines).  Images are left out (a section shows its figures
+    with their captions); a relative link is made relative to the report's folder (``base``:
+    the markdown's folder there)."""
+    md = MarkdownIt("commonmark", {"html": False, "breaks": breaks}).enable("table")
     md.renderer.rules["image"] = lambda tokens, idx, options, env: ""
 
     def link_open(tokens, idx, options, env):
@@ -95,24 +96,26 @@ def table_view(scene, diff: pd.DataFrame, register: dict[str, Deviation], blocks
     key = scene.key_name
     classes = classify_cells(diff, register)
     diff = diff.assign(shown=classes["count"].map(lambda c: SHOWN.get(c, c)), kind=classes["kind"])
+    records: dict[str, dict[str, list[dict]]] = {}          # row key: column: the engines' records
+    for record in diff.assign(row_key=diff[key].astype(str)).to_dict("records"):
+        records.setdefault(record["row_key"], {}).setdefault(record["column"], []).append(record)
     rows = []
-    for row_key in dict.fromkeys(diff[key].astype(str)):
-        row = diff[diff[key].astype(str) == row_key]
+    for row_key, by_column in records.items():
         shown = []
         for column in scene.values:
-            here = row[row["column"] == column]
-            if here.empty:
+            here = by_column.get(column)
+            if not here:
                 continue
-            first = here.iloc[0]
+            first = here[0]
             text = str(first["published_text"])
             printed = printed_digits(text)
             engines = {}
-            for r in here.itertuples(index=False):
-                ids = r.register_ids if isinstance(r.register_ids, str) else ""
-                engines[r.engine] = {"status": r.shown, "kind": r.kind, "value": _number(float(r.value)),
-                                     "difference": _number(float(r.abs_diff)),
-                                     "digits": digits_reproduced(float(r.abs_diff), float(r.half_unit), printed),
-                                     "ids": ids.split()}
+            for r in here:
+                ids = r["register_ids"] if isinstance(r["register_ids"], str) else ""
+                engines[r["engine"]] = {"status": r["shown"], "kind": r["kind"], "value": _number(float(r["value"])),
+                                        "difference": _number(float(r["abs_diff"])),
+                                        "digits": digits_reproduced(float(r["abs_diff"]), float(r["half_unit"]), printed),
+                                        "ids": ids.split()}
             cell_id = f"{scene.name}|{row_key}|{column}"
             lines = tuple(line for s in scene.statements(str(first[key]), column) for line in listing_lines.find(s))
             block = blocks.setdefault(lines, f"L{len(blocks)}")
@@ -163,7 +166,7 @@ def _scene_view(folder: "Folder", section: "SceneSection", register, blocks, cel
             view["counts"] = overview(section.outcome.counts)
         view["used"] = {i for ids in diff["register_ids"].fillna("") for i in str(ids).split()}
     else:
-        view["overview"] = markdown_html("\n".join(section.outcome.overview))
+        view["overview"] = markdown_html("\n".join(section.outcome.overview), breaks=True)
     return view
 
 

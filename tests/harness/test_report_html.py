@@ -1,6 +1,9 @@
-"""The HTML report and `linkrepro explain`: one run of Table I (readings skipped) into a temporary
-folder; the page is checked as a file (self-contained) and in headless Chromium (Debian's
-``chromium`` and ``chromium-driver``, driven by Selenium: nothing is downloaded).
+"""The HTML report and `linkrepro explain`: Table I, Table 5.1 and the conditioning study run into a
+temporary folder (readings skipped), then Table 5.1 rerun alone, and a quick bench into its
+bench/; the page is checked as a file (self-contained) and in headless Chromium (Debian's
+``chromium`` and ``chromium-driver``, driven by Selenium: nothing is downloaded): every section
+rendered, headings clear of the header, the cell's panel, units, a keyboard walk, contrast.
+Screenshots of the main views are kept in ``test-artifacts/report/`` (look at them).
 
 The expectations come from outside the run: the register (harness/deviations.toml) says which
 entry explains a cell, the listing (legacy/printed) and the scan (legacy/scan) give the line.
@@ -17,17 +20,23 @@ from pathlib import Path
 
 import pytest
 
-from linkrepro.harness import register
+from linkrepro.harness import register, report_folder
+from linkrepro.harness.bench_run import run_bench
 from linkrepro.harness.run import reproduce
 
 SCENE, ROW, COLUMN = "ali1977-table1", "160", "src_dx"
+OTHERS = ("rahman1996-table5_1", "ali1977-conditioning")
 LISTINGS = Path(__file__).resolve().parents[2] / "legacy"
+SHOTS = Path(__file__).resolve().parents[2] / "test-artifacts" / "report"
 
 
 @pytest.fixture(scope="module")
 def run_dir(tmp_path_factory) -> Path:
     out = tmp_path_factory.mktemp("html")
-    reproduce([SCENE], out, measure_readings=False)
+    reproduce([SCENE, *OTHERS], out, measure_readings=False)
+    reproduce([OTHERS[0]], out, measure_readings=False)           # a single-scene rerun
+    run_bench(1, out / "bench", quick=True)
+    report_folder.write(out)
     return out
 
 
@@ -58,10 +67,12 @@ class _Refs(HTMLParser):
 
 
 def test_page_is_self_contained(run_dir):
+    """Nothing is fetched (every src a data: URI); a link leads within the page or to a file of
+    the folder (a CSV a section names)."""
     refs = _Refs()
     refs.feed((run_dir / "report.html").read_text())
     assert refs.links == 0
-    outside = [u for u in refs.urls if not (u.startswith("data:") or u.startswith("#"))]
+    outside = [u for u in refs.urls if not (u.startswith("data:") or u.startswith("#") or (run_dir / u).is_file())]
     assert outside == []
     assert any(u.startswith("data:image/png;base64,") for u in refs.urls)     # the table's figure
 
@@ -84,8 +95,8 @@ def test_explain_unknown_row_is_a_usage_error(run_dir):
     assert done.returncode == 2 and "no row '165'" in done.stderr and "Traceback" not in done.stderr
 
 
-def _browser():
-    """A headless Chromium driven by Selenium, or a skip that says what is missing."""
+def _browser(size: tuple[int, int] = (1400, 900)):
+    """A headless Chromium driven by Selenium (window ``size`` px), or a skip that says what is missing."""
     try:
         from selenium import webdriver
         from selenium.webdriver.chrome.service import Service
@@ -97,7 +108,7 @@ def _browser():
         pytest.skip("no Chromium and chromedriver on this machine: `apt-get install chromium chromium-driver` "
                     "(make test does it on Debian) to run the browser test")
     options = webdriver.ChromeOptions()
-    for arg in ("--headless=new", "--no-sandbox", "--disable-dev-shm-usage", "--window-size=1400,900"):
+    for arg in ("--headless=new", "--no-sandbox", "--disable-dev-shm-usage", f"--window-size={size[0]},{size[1]}"):
         options.add_argument(arg)
     options.binary_location = binary
     options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
@@ -133,3 +144,142 @@ def test_clicking_a_misprinted_cell_shows_its_trail_in_chromium(run_dir):
         assert errors == []
     finally:
         browser.quit()
+
+
+# -- the page as a person reads it, at 1280 x 900 ---------------------------------------------
+
+@pytest.fixture
+def page(run_dir):
+    """The report open in Chromium at 1280 x 900; no severe console message while it was open."""
+    browser = _browser((1280, 900))
+    try:
+        browser.get((run_dir / "report.html").as_uri())
+        yield browser
+        assert [e for e in browser.get_log("browser") if e["level"] == "SEVERE"] == []
+    finally:
+        browser.quit()
+
+
+def shot(browser, name: str) -> None:
+    SHOTS.mkdir(parents=True, exist_ok=True)
+    browser.save_screenshot(str(SHOTS / f"{name}.png"))
+
+
+def rect(browser, element) -> dict:
+    return browser.execute_script("return arguments[0].getBoundingClientRect().toJSON()", element)
+
+
+def test_every_section_is_rendered_and_none_is_lost_by_a_rerun(page):
+    from selenium.webdriver.common.by import By
+    ids = [s.get_attribute("id") for s in page.find_elements(By.CSS_SELECTOR, "main section")]
+    assert {SCENE, *OTHERS, "bench", "arithmetic"} <= set(ids)
+    text = page.execute_script("return document.querySelector('main').innerText")
+    for raw in ("|---", "| ---", "**", "](", "![", "\n| "):
+        assert raw not in text, raw                             # no markdown left as text
+    bench = page.find_element(By.ID, "bench")
+    assert bench.find_elements(By.CSS_SELECTOR, ".markdown table") and bench.find_elements(By.TAG_NAME, "img")
+    overview = page.find_element(By.CSS_SELECTOR, f"#{OTHERS[1]} .markdown")
+    assert len(overview.text.splitlines()) >= 2                 # its lines stay lines
+    assert "linkrepro arithmetic --out" in page.find_element(By.ID, "arithmetic").text
+    shot(page, "top")
+
+
+def test_each_heading_is_clear_of_the_header_after_its_link_is_clicked(page):
+    from selenium.webdriver.common.by import By
+    links = page.find_elements(By.CSS_SELECTOR, "header nav a")
+    assert len(links) == len(page.find_elements(By.CSS_SELECTOR, "main section")) + 1
+    for link in links:
+        assert page.execute_script("return arguments[0].getClientRects().length", link) == 1   # never wrapped
+    for link in links:
+        link.click()
+        target = page.find_element(By.ID, link.get_attribute("href").split("#", 1)[1])
+        heading = target if target.tag_name == "h2" else target.find_element(By.TAG_NAME, "h2")
+        header = rect(page, page.find_element(By.TAG_NAME, "header"))
+        box = rect(page, heading)
+        assert box["top"] >= header["bottom"] - 0.5 and box["bottom"] <= page.execute_script("return innerHeight"), \
+            (link.text, box, header)
+        if link.text == SCENE:
+            shot(page, "table")
+
+
+def test_the_panel_fits_and_leaves_the_cell_in_view(page):
+    from selenium.webdriver.common.by import By
+    columns = [th.find_element(By.CSS_SELECTOR, ".id").text
+               for th in page.find_elements(By.CSS_SELECTOR, f"#{SCENE} table.published tr:first-child th")]
+    for column in (COLUMN, columns[-1]):                       # a middle column, and the last one
+        cell = page.find_element(By.CSS_SELECTOR, f'td.cell[data-cell="{SCENE}|{ROW}|{column}"]')
+        page.execute_script("arguments[0].scrollIntoView({block: 'center'})", cell)
+        cell.click()
+        panel = page.find_element(By.ID, "panel")
+        assert panel.is_displayed()
+        assert page.execute_script("return arguments[0].scrollWidth <= arguments[0].clientWidth", panel)
+        box, side = rect(page, cell), rect(page, panel)
+        header = rect(page, page.find_element(By.TAG_NAME, "header"))
+        assert box["left"] >= 0 and box["right"] <= side["left"], (column, box, side)
+        assert box["top"] >= header["bottom"] and box["bottom"] <= page.execute_script("return innerHeight")
+        if column == COLUMN:
+            shot(page, "panel")
+
+
+def test_columns_are_headed_in_words_with_their_unit_and_id(page):
+    from selenium.webdriver.common.by import By
+    heads = page.find_elements(By.CSS_SELECTOR, f"#{SCENE} table.published tr:first-child th")
+    texts = [h.text for h in heads]
+    assert any(t.startswith("input-link rotation (deg)") for t in texts[:1]), texts
+    assert all("(in)" in t for t in texts[1:]) and texts[3].endswith(COLUMN), texts
+
+
+def test_a_copied_cell_is_its_value_and_the_digits_marker_says_what_it_means(page):
+    from selenium.webdriver.common.by import By
+    cell = page.find_element(By.CSS_SELECTOR, f'td.cell[data-cell="{SCENE}|{ROW}|{COLUMN}"]')
+    copied = page.execute_script("""const r = document.createRange(); r.selectNodeContents(arguments[0]);
+        const s = getSelection(); s.removeAllRanges(); s.addRange(r); return s.toString();""", cell)
+    assert copied.strip() == "-0.655"
+    marker = cell.find_element(By.CSS_SELECTOR, '.digits[data-engine="legacy"]')
+    assert marker.text == "0/3" and "0 of the 3 printed digits" in marker.get_attribute("title")   # a misprinted sign
+    matched = page.find_element(By.CSS_SELECTOR, f'td.cell[data-cell="{SCENE}|0|{COLUMN}"] .digits[data-engine="legacy"]')
+    assert matched.text == "3/3"                               # a match reproduces every printed digit
+
+
+def test_a_keyboard_walk_reaches_a_cell_opens_and_closes_its_trail(page):
+    from selenium.webdriver.common.action_chains import ActionChains
+    from selenium.webdriver.common.by import By
+    from selenium.webdriver.common.keys import Keys
+    for _ in range(400):
+        ActionChains(page).send_keys(Keys.TAB).perform()
+        if page.execute_script("return document.activeElement.matches('td.cell')"):
+            break
+    else:
+        pytest.fail("Tab never reached a cell")
+    cell = page.switch_to.active_element
+    assert page.execute_script("return getComputedStyle(arguments[0]).outlineStyle", cell) != "none"   # visible focus
+    ActionChains(page).send_keys(Keys.ENTER).perform()
+    panel = page.find_element(By.ID, "panel")
+    assert panel.is_displayed() and cell.text.split()[0] in panel.text
+    shot(page, "keyboard")
+    ActionChains(page).send_keys(Keys.ESCAPE).perform()
+    assert not panel.is_displayed()
+    assert page.execute_script("return document.activeElement === arguments[0]", cell)
+
+
+def _luminance(css: str) -> float:
+    channels = [float(v) / 255 for v in re.findall(r"[\d.]+", css)[:3]]
+    linear = [c / 12.92 if c <= 0.04045 else ((c + 0.055) / 1.055) ** 2.4 for c in channels]
+    return 0.2126 * linear[0] + 0.7152 * linear[1] + 0.0722 * linear[2]
+
+
+def test_text_on_every_status_colour_has_sufficient_contrast(page):
+    """WCAG AA: 4.5:1 for the value, the digits marker and the legend on each status colour."""
+    from selenium.webdriver.common.by import By
+    elements = page.find_elements(By.CSS_SELECTOR, ".legend span span, .legend > span")
+    for status in ("match", "explained", "unresolved", "unexplained", "not-produced"):
+        found = page.find_elements(By.CSS_SELECTOR, f'td.cell[data-legacy="{status}"]')
+        if found:
+            elements += [found[0], found[0].find_element(By.CSS_SELECTOR, '.digits[data-engine="legacy"]')]
+    assert len(elements) >= 5
+    for element in elements:
+        style = page.execute_script("""let e = arguments[0]; const colour = getComputedStyle(e).color;
+            while (e && getComputedStyle(e).backgroundColor === 'rgba(0, 0, 0, 0)') e = e.parentElement;
+            return [colour, e ? getComputedStyle(e).backgroundColor : 'rgb(255, 255, 255)'];""", element)
+        light, dark = sorted(map(_luminance, style), reverse=True)
+        assert (light + 0.05) / (dark + 0.05) >= 4.5, (element.text, style)
