@@ -25,7 +25,7 @@ from markdown_it import MarkdownIt
 from PIL import Image
 
 from . import figures as figures_mod, listing_lines, register as register_mod
-from .diff import CLASSES, COUNT_COLUMNS, classify_cells, headline
+from .diff import CLASSES, COUNT_COLUMNS, EXPLAINED_BY, classify_cells, headline
 from .engines import ENGINES
 from .register import Deviation
 from .report import heading
@@ -189,12 +189,14 @@ def render(folder: "Folder") -> str:
     sections = [_scene_view(folder, s, register, blocks, cells) if s.kind == "scene" else _output_view(folder, s)
                 for s in folder.sections]
     used = set().union(*(s.get("used", set()) for s in sections))
+    totals = folder.cell_totals()
+    kinds = [k for k in EXPLAINED_BY if totals.get(k, 0)]      # the overview's kinds: those that explain a cell
     env = jinja2.Environment(loader=jinja2.FileSystemLoader(TEMPLATES), autoescape=True,
                              undefined=jinja2.StrictUndefined, trim_blocks=True, lstrip_blocks=True)
     return env.get_template("report.html.j2").render(
         sections=sections, absent=folder.absent, out_dir=str(folder.out_dir), engines=ENGINES,
-        statuses=CELL_STATUSES, columns=[(c, heading(c)) for c in COUNT_COLUMNS],
-        total=headline(folder.cell_totals(), by_kind=True),
+        statuses=CELL_STATUSES, columns=[(c, heading(c)) for c in COUNT_COLUMNS if c not in EXPLAINED_BY or c in kinds],
+        kinds=kinds, total=headline(totals, by_kind=True),
         entries=[_entry(register[i]) for i in sorted(used) if i in register],
         blocks={block: [_line(line) for line in lines] for lines, block in blocks.items()},
         cells_json=json.dumps(cells, separators=(",", ":")).replace("</", "<\\/"))

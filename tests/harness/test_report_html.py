@@ -221,6 +221,23 @@ def test_the_panel_fits_and_leaves_the_cell_in_view(page):
             shot(page, "panel")
 
 
+def test_figures_are_shown_at_their_natural_size_and_the_overview_fits(page):
+    """A figure's text is >= 9 pt at its natural size (harness/figures.py): the page never
+    shrinks it, with the panel closed or open; the overview table needs no scrolling at 1280 px."""
+    from selenium.webdriver.common.by import By
+    sizes = "return [...document.querySelectorAll('main figure img')].map(i => [i.clientWidth, i.naturalWidth])"
+    shown = page.execute_script(sizes)
+    assert shown and all(w == natural for w, natural in shown), shown
+    overview = page.find_element(By.CSS_SELECTOR, "table.overview")
+    assert page.execute_script("return arguments[0].parentElement.scrollWidth <= arguments[0].parentElement.clientWidth",
+                               overview)
+    cell = page.find_element(By.CSS_SELECTOR, f'td.cell[data-cell="{SCENE}|{ROW}|{COLUMN}"]')
+    page.execute_script("arguments[0].scrollIntoView({block: 'center'})", cell)
+    cell.click()
+    assert page.find_element(By.ID, "panel").is_displayed()
+    assert all(w == natural for w, natural in page.execute_script(sizes))
+
+
 def test_columns_are_headed_in_words_with_their_unit_and_id(page):
     from selenium.webdriver.common.by import By
     heads = page.find_elements(By.CSS_SELECTOR, f"#{SCENE} table.published tr:first-child th")
