@@ -12,6 +12,7 @@ import pandas as pd
 from matplotlib.figure import Figure
 
 from .diff import EXPLAINED_BY, classify_cells, column_max, count_cells
+from .figures import ENGINE_STYLE, MAX_WIDTH_IN, RC, new_figure, save
 from .register import Deviation
 
 STYLE = {"published": dict(marker="o", ls="none", color="k", ms=4),
@@ -32,39 +33,129 @@ def markdown_table(frame: pd.DataFrame, floatfmt: str = "{:.3g}") -> str:
     return "\n".join(lines)
 
 
+def panel_grid(width_in: float, across: int, down: int, panel_height_in: float, title: str, *,
+               title_lines: int = 1, legend_rows: int = 1, left: float = 0.8, right: float = 0.2,
+               bottom: float = 0.55, gap_across: float = 0.8) -> tuple[Figure, dict]:
+    """A figure ``width_in`` wide for ``down`` x ``across`` panels of ``panel_height_in`` each, its
+    ``title`` on top (wrapped to the width) with room under it for ``top_legend``'s ``legend_rows``
+    rows and for panel titles of ``title_lines`` lines; and the ``subplots_adjust`` margins (for
+    ``figures.save``) that leave, in inches, ``left``, ``right``, ``bottom`` around the panels,
+    ``gap_across`` between them, and between rows their tick labels, x labels and titles."""
+    heading = wrap_title(title, width_in - 0.3, RC["figure.titlesize"])
+    titles = title_lines * line_height(RC["axes.titlesize"])
+    top = _legend_top(heading) + legend_rows * LEGEND_ROW_IN + LEGEND_GAP_IN + titles
+    gap_down = 0.55 + titles
+    height = top + bottom + down * panel_height_in + (down - 1) * gap_down
+    fig = new_figure(width_in, height)
+    fig.suptitle(heading, y=1 - 0.08 / height, va="top")
+    margins = dict(left=left / width_in, right=1 - right / width_in, bottom=bottom / height, top=1 - top / height,
+                   wspace=gap_across / panel_width(width_in, across, left, right, gap_across),
+                   hspace=gap_down / panel_height_in)
+    return fig, margins
+
+
+def panel_width(width_in: float, across: int, left: float = 0.8, right: float = 0.2, gap_across: float = 0.8) -> float:
+    """The width (in) of each of ``across`` panels in a figure ``width_in`` wide (``panel_grid``'s room)."""
+    return (width_in - left - right - (across - 1) * gap_across) / across
+
+
+def wrap_title(words: str, width_in: float, size_pt: float = RC["axes.titlesize"]) -> str:
+    """``words`` broken into lines that fit ``width_in`` at ``size_pt`` (DejaVu Sans: about 0.55
+    of the size per character, on average, in words like these)."""
+    return textwrap.fill(words, max(12, int(width_in * 72 / (0.55 * size_pt))))
+
+
+def line_height(size_pt: float) -> float:
+    """The height (in) of one line of text of ``size_pt``, with its spacing."""
+    return 1.3 * size_pt / 72
+
+
+#: the height (in) of a legend's row of 9 pt entries, and the space under the legend
+LEGEND_ROW_IN, LEGEND_GAP_IN = 0.24, 0.16
+
+
+def _legend_top(heading: str) -> float:
+    """How far (in) under the figure's top edge the legend row starts, under ``heading``."""
+    return 0.14 + (heading.count("\n") + 1) * line_height(RC["figure.titlesize"])
+
+
+def top_legend(fig: Figure, handles: dict, rows: int = 1) -> None:
+    """The legend of ``handles`` (label -> artist) in ``rows`` rows under the title ``panel_grid`` put."""
+    fig.legend(list(handles.values()), list(handles), loc="upper center", ncols=-(-len(handles) // rows),
+               frameon=False, borderaxespad=0.0,
+               bbox_to_anchor=(0.5, 1 - _legend_top(fig.get_suptitle()) / fig.get_figheight()))
+
+
 def plot_scene(scene, published, results: dict[str, pd.DataFrame], outdir: Path) -> list[Path]:
-    """One figure for the table, ``<scene>/table.png``: small multiples, one axes per column, the
-    published points over every engine's curve against the key column (its words and unit)."""
+    """One figure for the table, ``<scene>/table.png``: small multiples, one panel per column (its
+    words above, its unit on the axis), the published points over every engine's curve against
+    the key column; the legend above the panels."""
     if not isinstance(scene.key, str):
         return []                          # rows named by text (Table 5.1): the CSVs say it all
     frames = {"published": published.values, **results}
     columns = len(scene.values)
     across = min(columns, 4)
     down = -(-columns // across)
-    fig = Figure(figsize=(3.3 * across, 2.35 * down + 0.85))
+    width = min(MAX_WIDTH_IN, 0.2 + across * (4.2 if across <= 2 else 2.95))
+    titles = [wrap_title(scene.describe(col).words, panel_width(width, across)) for col in scene.values]
+    fig, margins = panel_grid(width, across, down, 1.9 if across > 2 else 2.3, scene.title,
+                              title_lines=max(t.count("\n") + 1 for t in titles))
     axes = fig.subplots(down, across, squeeze=False, sharex=True)
     key = scene.describe(scene.key)
-    for ax, col in zip(axes.flat, scene.values):
-        what = scene.describe(col)
+    for ax, col, title in zip(axes.flat, scene.values, titles):
         for engine, frame in frames.items():
             if engine == "published" or frame[col].notna().any():
-                ax.plot(frame[scene.key].to_numpy(), frame[col].to_numpy(), label=engine, **STYLE.get(engine, {}))
-        ax.set_title(textwrap.fill(what.words, 40), fontsize=7.5)
-        ax.set_ylabel(what.unit, fontsize=8)
-        ax.tick_params(labelsize=7)
+                ax.plot(frame[scene.key].to_numpy(), frame[col].to_numpy(), label=engine, **ENGINE_STYLE[engine])
+        ax.set_title(title, y=1.0)        # placed above the axes: matplotlib does not fit it (a layout pass)
+        ax.set_ylabel(scene.describe(col).unit or "pure number")
         ax.grid(alpha=0.3)
     for ax in axes.flat[columns:]:
         ax.set_visible(False)
     for ax in axes.flat[max(0, columns - across):columns]:        # the lowest axes of each column
-        ax.set_xlabel(key.label, fontsize=8)
+        ax.set_xlabel(key.label)
         ax.xaxis.set_tick_params(labelbottom=True)
-    legend = {label: handle for ax in axes.flat for handle, label in zip(*ax.get_legend_handles_labels())}
-    height = 2.35 * down + 0.85
-    fig.suptitle(scene.title, fontsize=9, y=1 - 0.08 / height, va="top")
-    fig.legend(list(legend.values()), list(legend), loc="upper center", ncol=len(legend), fontsize=8,
-               frameon=False, bbox_to_anchor=(0.5, 1 - 0.3 / height))
-    return [save_png(fig, outdir / "table.png", left=0.6 / (3.3 * across), right=0.99, bottom=0.5 / height,
-                     top=1 - 0.85 / height, hspace=0.6, wspace=0.3)]
+    handles = {label: handle for ax in axes.flat for handle, label in zip(*ax.get_legend_handles_labels())}
+    top_legend(fig, handles)
+    caption = (f"{scene.title}: every column of the table against {key.label}, one panel per column (its "
+               f"words above it, its unit on the axis); black dots the table as published, a line or mark per "
+               f"engine (the legend). " + " ".join(_table_facts(scene, published, results)))
+    return [save(fig, outdir / "table.png", caption, **margins)]
+
+
+def _table_facts(scene, published, results: dict[str, pd.DataFrame]) -> list[str]:
+    """What ``plot_scene``'s figure shows, measured on its data: how many published cells lie more
+    than half a unit of their last digit from legacy's value, how far port_printed is from legacy,
+    how many cells the printed program gives and how many of them as published."""
+    facts = []
+    pub = published.values.set_index(scene.key)[scene.values]
+    half = published.half_unit.set_axis(pub.index)[scene.values]
+    engine = {name: frame.set_index(scene.key).reindex(pub.index)[scene.values] for name, frame in results.items()}
+
+    def count(mask: pd.DataFrame) -> int:
+        return int(mask.to_numpy().sum())
+
+    def as_published(values: pd.DataFrame) -> pd.DataFrame:
+        return (values - pub).abs() <= half * (1 + 1e-9)
+
+    if "legacy" in engine:
+        shown = pub.notna() & engine["legacy"].notna()
+        facts.append(f"{count(shown & ~as_published(engine['legacy']))} of {count(shown)} published cells lie more "
+                     "than half a unit of their last printed digit from legacy's value (the table's cells give "
+                     "each one's status and register entries).")
+        if "port_printed" in engine:
+            gap = float((engine["port_printed"] - engine["legacy"]).abs().max().max())
+            facts.append("The port with the listing's bugs (port_printed, dashed) lies on legacy's line: the two "
+                         "are equal at every row." if gap == 0 else
+                         f"The port with the listing's bugs (port_printed, dashed) differs from legacy by "
+                         f"{gap:.2g} at most (in the columns' units).")
+    given = pub.notna() & engine["printed"].notna() if "printed" in engine else pd.DataFrame()
+    if count(given):
+        facts.append(f"The printed program's own output (grey crosses, hidden under a dot where they agree) gives "
+                     f"{count(given)} of the cells, {count(given & as_published(engine['printed']))} of them as "
+                     "published.")
+    if "port_corrected" in engine:
+        facts.append("port_corrected is the port with the registered bugs removed.")
+    return facts
 
 
 def curve_figure(curves: list[tuple], xlabel: str, ylabel: str, title: str, path: Path) -> Path:
