@@ -105,8 +105,13 @@ def test_appendix_scene_curves_and_speed_claim(tmp_path):
     speed claim against closed form: inertia loads grow as the speed squared and the
     structure is linear, so the 400/300 rpm peak ratio is (4/3)^2 for every curve."""
     from linkrepro.harness.scenes.ali1977 import appendix
+    from linkrepro.harness.figures import caption_of
     summary = appendix.run(tmp_path)
     assert summary["curves"] == 36 and summary["max_engine_gap"] < 1e-12
-    assert len(list((tmp_path / appendix.NAME).glob("*.png"))) == 18
+    pngs = sorted((tmp_path / appendix.NAME).glob("*.png"))
+    assert [p.name for p in pngs] == ["case1.png", "case2.png", "case3.png"]       # one figure per case
+    for case, png in zip(("I", "II", "III"), pngs):
+        caption = caption_of(png)
+        assert caption.startswith(f"Case {case}:") and "equal at every point" in caption    # measured: gap 0
     claims = pd.read_csv(tmp_path / appendix.NAME / "claims.csv")
     np.testing.assert_allclose(claims["ratio_400_300"], 16 / 9, rtol=1e-4)

@@ -11,6 +11,7 @@ from pathlib import Path
 
 import numpy as np
 import pandas as pd
+from matplotlib.colors import to_rgb
 
 from ....legacy import ali1977
 from ....port.ali1977 import PRINTED, cognate_case1, source_case1
@@ -20,7 +21,8 @@ from ....port.ali1977.case2 import case2_cognate, case2_source
 from ....port.ali1977.case3 import COGNATE_LISTING as CASE3_COG
 from ....port.ali1977.case3 import LISTING as CASE3
 from ....port.ali1977.case3 import case3_cognate, case3_source
-from ...report import curve_figure, draw_all
+from ...figures import ENGINE_STYLE, save
+from ...report import draw_all, panel_grid, top_legend, wrap_title
 from ...scene import ReportScene
 from .quantities import CURVES as QUANTITIES, KED
 from .tables import GROUP, START
@@ -80,15 +82,67 @@ def run(out_dir: Path) -> dict:
 
 
 def _plot(curves: pd.DataFrame, target: Path) -> list[Path]:
-    """One PNG per case, mechanism and quantity: legacy and port at both speeds."""
-    jobs = []
-    for (case, mech, q), group in curves.groupby(["case", "mechanism", "quantity"], sort=False):
-        lines = [(g["input_deg"].to_numpy(), g["value"].to_numpy(), f"{engine}, {rpm:g} rpm",
-                  dict(ls="-", lw=1.5) if engine == "legacy" else dict(ls="--", lw=1.0, color="k"))
-                 for (rpm, engine), g in group.groupby(["rpm", "engine"])]
-        jobs.append((lines, KED["input_deg"].label, QUANTITIES[q].label,
-                     f"Case {case}, {mech} four-bar: {QUANTITIES[q].words}", target / f"case{case}_{mech}_{q}.png"))
-    return draw_all(curve_figure, jobs)
+    """One figure per case, ``case1.png`` ... ``case3.png`` (reading order): a panel per
+    mechanism (rows) and quantity (columns), both engines at both speeds in each."""
+    cases = list(dict.fromkeys(curves["case"]))
+    return draw_all(_draw_case, [(case, curves[curves["case"] == case], target / f"case{k}.png")
+                                 for k, case in enumerate(cases, start=1)])
+
+
+#: how much paler (towards white) the 300 rpm curves are than the engine's own colour
+PALE = 0.55
+
+
+def _style(engine: str, rpm: float) -> dict:
+    """The engine's look (figures.ENGINE_STYLE), pale at the lower speed."""
+    style = dict(ENGINE_STYLE[engine])
+    if rpm == min(SPEEDS):
+        style["color"] = tuple(c + PALE * (1.0 - c) for c in to_rgb(style["color"]))
+    return style
+
+
+def _draw_case(case: str, curves: pd.DataFrame, path: Path) -> Path:
+    """Case ``case``'s figure: rows source and cognate, columns dx, dy, rot (in, in, rad)."""
+    mechanisms = list(dict.fromkeys(curves["mechanism"]))
+    fig, margins = panel_grid(12.0, len(QUANTITIES), len(mechanisms), 2.1,
+                              f"Ali (1977) Appendix A, Case {case}: elastic deflections of the path point "
+                              "against input-link rotation", title_lines=2)
+    axes = fig.subplots(len(mechanisms), len(QUANTITIES), squeeze=False, sharex=True)
+    for row, mech in zip(axes, mechanisms):
+        for ax, q in zip(row, QUANTITIES):
+            one = curves[(curves["mechanism"] == mech) & (curves["quantity"] == q)]
+            for (rpm, engine), g in one.groupby(["rpm", "engine"], sort=False):
+                ax.plot(g["input_deg"].to_numpy(), g["value"].to_numpy(), label=f"{engine}, {rpm:g} rpm",
+                        **_style(engine, rpm))
+            ax.set_title(wrap_title(f"{mech} four-bar: {QUANTITIES[q].words}", 3.0))
+            ax.set_ylabel(QUANTITIES[q].unit)
+            ax.grid(alpha=0.3)
+    for ax in axes[-1]:
+        ax.set_xlabel(KED["input_deg"].label)
+    top_legend(fig, {label: h for ax in axes.flat for h, label in zip(*ax.get_legend_handles_labels())})
+    low, high = _speed_ratio(curves)
+    gap = _engine_gap(curves)
+    caption = (f"Case {case}: the path point's deflection along x and y (in) and its rotation (rad) against "
+               f"input-link rotation, source four-bar above, cognate below, at {SPEEDS[0]:g} rpm (pale) and "
+               f"{SPEEDS[1]:g} rpm (strong colours). The port with the listings' quirks (dashed) "
+               + ("lies on legacy's line: the two are equal at every point" if gap == 0 else
+                  f"differs from legacy by {gap:.2g} at most (in or rad)")
+               + f". Each {SPEEDS[1]:g} rpm curve is the {SPEEDS[0]:g} rpm one times {low:.5f} to {high:.5f} "
+               f"(legacy, at every point where the {SPEEDS[0]:g} rpm value is over a thousandth of its curve's "
+               f"largest), against ({SPEEDS[1]:g}/{SPEEDS[0]:g})^2 = {(SPEEDS[1] / SPEEDS[0]) ** 2:.5f}; where the "
+               "largest deflections fall, against chapter V's 'second half of the cycle', is in the table above.")
+    return save(fig, path, caption, **margins)
+
+
+def _speed_ratio(curves: pd.DataFrame) -> tuple[float, float]:
+    """The smallest and largest ratio of legacy's faster curve to its slower one, point by point,
+    over the points where the slower curve's |value| exceeds a thousandth of its largest."""
+    legacy = curves[curves["engine"] == "legacy"]
+    wide = legacy.pivot_table(index=["mechanism", "quantity", "input_deg"], columns="rpm", values="value")
+    slow, fast = wide[SPEEDS[0]], wide[SPEEDS[1]]
+    largest = slow.abs().groupby(level=["mechanism", "quantity"]).transform("max")
+    ratio = (fast / slow)[slow.abs() > 1e-3 * largest]
+    return float(ratio.min()), float(ratio.max())
 
 
 def _claims(curves: pd.DataFrame) -> pd.DataFrame:
@@ -131,7 +185,7 @@ def _report(curves, claims, gap, timings, missing, plots) -> str:
     for r in claims.itertuples():
         lines.append(f"| {r.case} | {r.mechanism} | {r.quantity} | {r.ratio_400_300:.3f} | "
                      f"{r.peak_deg_300:g} / {r.peak_deg_400:g} | {'yes' if r.peak_in_second_half else 'no'} |")
-    lines += ["", "## Plots", ""] + [f"![{p.stem}]({p.name})" for p in plots]
+    lines += ["", "## Figures", ""] + [f"![{p.stem}]({p.name})" for p in plots]
     return "\n".join(lines) + "\n"
 
 
