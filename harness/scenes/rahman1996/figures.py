@@ -15,7 +15,8 @@ from . import quoted_numbers
 from .quoted_numbers import decrement_pct
 from ...csv_output import write_csv
 from ...published_tables import PUBLISHED_DIR, PublishedTable
-from ...report import STYLE, curve_figure, draw_all
+from ...figures import ENGINE_STYLE, save
+from ...report import panel_grid, panel_width, top_legend, wrap_title
 from ....port.rahman1996.quirks import CSSP_CORRECTED, CSSP_PRINTED
 from ...scene import ReportScene
 from .quantities import FIGURES as QUANTITIES, TABLE_QUANTITY
@@ -58,16 +59,62 @@ def section_5_3(pct: pd.DataFrame) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
-def plot_figures(pct: pd.DataFrame, outdir: Path) -> list[Path]:
-    """Figures 5.1-5.6: every engine's decrement against crank angle."""
-    jobs = []
-    for k, table in enumerate(TABLES, start=1):
-        curves = [(group["crank_deg"].to_numpy(), group["pct"].to_numpy(), engine, STYLE.get(engine, {}))
-                  for engine, group in pct[pct["table"] == table].groupby("engine", sort=False)]
-        title = f"Figure 5.{k}: {TABLE_QUANTITY[table].words} (Table 5.{k + 1}), decrement by balancing"
-        jobs.append((curves, QUANTITIES["crank_deg"].label, QUANTITIES["pct"].label, title,
-                     outdir / f"figure5_{k}.png"))
-    return draw_all(curve_figure, jobs)
+def plot_figures(pct: pd.DataFrame, outdir: Path, misprinted: set[tuple[str, float]]) -> list[Path]:
+    """Figures 5.1-5.6 in one figure, ``figures5_1-5_6.png``: a panel per figure, every engine's
+    decrement (%) against crank angle (deg); ``misprinted``: the (table, crank angle) of the
+    cells the register gives as misprinted (its caption counts the published outliers among them)."""
+    across = 3
+    fig, margins = panel_grid(12.0, across, -(-len(TABLES) // across), 2.4,
+                              "Rahman (1996) Figures 5.1-5.6: decrement by optimum balancing, (before - after) / "
+                              "before, against crank angle", title_lines=2)
+    axes = fig.subplots(-(-len(TABLES) // across), across, squeeze=False, sharex=True)
+    for k, (ax, table) in enumerate(zip(axes.flat, TABLES), start=1):
+        for engine, group in pct[pct["table"] == table].groupby("engine", sort=False):
+            ax.plot(group["crank_deg"].to_numpy(), group["pct"].to_numpy(), label=engine, **ENGINE_STYLE[engine])
+        ax.set_title(f"Figure 5.{k} (Table 5.{k + 1})\n"
+                     + wrap_title(TABLE_QUANTITY[table].words, panel_width(12.0, across)))
+        ax.set_ylabel(f"decrement ({QUANTITIES['pct'].unit})")
+        ax.grid(alpha=0.3)
+    for ax in axes[-1]:
+        ax.set_xlabel(QUANTITIES["crank_deg"].label)
+    top_legend(fig, {label: h for ax in axes.flat for h, label in zip(*ax.get_legend_handles_labels())})
+    caption = ("The decrement of each quantity by optimum balancing, (before - after) * 100 / before at each "
+               "crank position, as Figures 5.1-5.6 plot it: black dots from the published Tables 5.2-5.7, a line or "
+               "mark per engine (the legend). Measured: " + "; ".join(_figure_facts(pct, misprinted)) + ".")
+    return [save(fig, outdir / "figures5_1-5_6.png", caption, **margins)]
+
+
+#: a published point this far from legacy's (percentage points) is an outlier the caption names
+OUTLIER_PCT = 1.0
+
+
+def _figure_facts(pct: pd.DataFrame, misprinted: set[tuple[str, float]]) -> list[str]:
+    """What ``plot_figures`` shows, measured on ``pct``: port_printed against legacy, the figures
+    the printed program gives, the published outliers and how many sit at a misprinted cell."""
+    wide = pct.pivot_table(index=["table", "crank_deg"], columns="engine", values="pct")
+    figure = {t: f"5.{k}" for k, t in enumerate(TABLES, start=1)}
+    gap = float((wide["port_printed"] - wide["legacy"]).abs().max())
+    facts = ["the port with the listing's bugs (port_printed, dashed) " +
+             ("lies on legacy's line, equal at every point" if gap == 0 else f"differs from legacy by {gap:.2g} % at most")]
+    printed = sorted(pct.loc[pct["engine"] == "printed", "table"].unique())
+    facts.append(f"the printed program gives Figure{'s' if len(printed) > 1 else ''} "
+                 f"{', '.join(figure[t] for t in printed) or 'none'} (grey crosses)")
+    off = (wide["published"] - wide["legacy"]).abs()
+    outliers = off[off > OUTLIER_PCT].index.tolist()
+    where = ", ".join(f"Figure {figure[t]} at {deg:g} deg" for t, deg in outliers)
+    facts.append(f"{len(outliers)} published points lie more than {OUTLIER_PCT:g} percentage point from legacy's "
+                 f"({where or 'none'}), {sum(o in misprinted for o in outliers)} of them at a table cell the "
+                 "register gives as misprinted" if outliers else
+                 f"no published point lies more than {OUTLIER_PCT:g} percentage point from legacy's")
+    facts.append("port_corrected is the port with the registered bugs removed")
+    return facts
+
+
+def misprinted_cells(entries: dict) -> set[tuple[str, float]]:
+    """(table, crank angle) of every cell of Tables 5.2-5.7 a published-misprint entry names."""
+    return {(t, float(row)) for entry in entries.values() if entry.kind == "published-misprint"
+            for claim in entry.cells for t in TABLES if claim.scene == f"rahman1996-table{t}"
+            for row in claim.rows if row != "*"}
 
 
 def run(out_dir: Path) -> dict:
@@ -79,9 +126,10 @@ def run(out_dir: Path) -> dict:
     pct.to_csv(target / "percentages.csv", index=False, float_format="%.6g")
     stats = section_5_3(pct)
     stats.to_csv(target / "section5_3.csv", index=False, float_format="%.6g")
-    quoted = quoted_numbers.percentage_checks(register.load())
+    entries = register.load()
+    quoted = quoted_numbers.percentage_checks(entries)
     write_csv(quoted, target / "identities.csv", "%.9g")
-    plots = plot_figures(pct, target)
+    plots = plot_figures(pct, target, misprinted_cells(entries))
     lines = ["# Rahman (1996), Figures 5.1-5.6 and the percentages of section 5.3", "",
              "Decrement (before - after) * 100 / before at each of the 37 crank positions, as the listing "
              "computes it (DOBJFUN, dshf, dsht, dbrf, dbrt, dint), from the published tables and from each "
