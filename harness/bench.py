@@ -181,11 +181,13 @@ def knob_rows(knob: Knob, repeat: int) -> list[dict]:
 class Sweep:
     """A knob measured by a study of its own rather than by ``timed``: ``rows(repeat)``, its
     rows of bench.csv (the Pareto front marked, ``with_pareto_front``); ``what``, its description in
-    bench.md.  A sweep has many settings: ``bench_run.run_bench`` gives it ``repeat // 10`` calls a
-    timing, at least 1."""
+    bench.md; ``series``, where given, splits a setting into its series and its point's label (the
+    figure draws a line per series).  A sweep has many settings: ``bench_run.run_bench`` gives it
+    ``repeat // 10`` calls a timing, at least 1."""
     name: str
     what: str
     rows: Callable[[int], list[dict]]
+    series: Callable[[str], tuple[str, str]] | None = None    # setting -> (series, point label), for the figure
 
 
 def pareto_front(seconds, errors) -> np.ndarray:
@@ -262,49 +264,280 @@ def markdown(frame: pd.DataFrame, descriptions: dict[str, str], repeat: int, ela
     lines += cost_table(frame[frame.kind == "cost"])
     lines += ["", "## Speed against error, per knob", "",
               "Seconds of one call (every position of the setting); error against the knob's converged "
-              "reference. The figure plots them per knob, the Pareto front joined.", "",
+              "reference. The figure plots them per knob (those with three settings or more of different errors), the "
+              "Pareto front marked; its caption tells the others.", "",
               f"![error against time]({png})", ""]
     lines += knob_tables(frame[frame.kind == "knob"], descriptions)
     return "\n".join(lines) + "\n"
 
 
-def plot(frame: pd.DataFrame, path: Path) -> None:
-    """Error against time, one panel per knob, the Pareto front joined; a zero error (the
-    reference, or as good) at the panel's floor, a failed setting at its ceiling."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    from matplotlib.ticker import NullFormatter
-    groups = list(frame[frame.kind == "knob"].groupby("subject", sort=False))
-    rows = -(-len(groups) // 3)
-    fig, axes = plt.subplots(rows, 3, figsize=(12, 3.4 * rows), squeeze=False)
-    for ax, (name, g) in zip(axes.flat, groups):
-        error = g.error.astype(float)
-        positive = error[np.isfinite(error) & (error > 0)]
-        floor, ceiling = (positive.min() / 10, positive.max() * 10) if len(positive) else (1e-16, 1.0)
-        shown = error.where(np.isfinite(error), ceiling).clip(lower=floor)
-        kinds = [(np.isfinite(error) & (error > 0), "o", "0.6", "setting"),
-                 (error <= 0, "v", "C0", "error 0 (the reference)"), (~np.isfinite(error), "x", "k", "failed")]
-        for where, marker, colour, label in kinds:
-            ax.loglog(g.seconds[where], shown[where], marker, color=colour, ms=5, label=label)
-        front = g.seconds[g.pareto.astype(bool)].sort_values().index
-        ax.loglog(g.seconds[front], shown[front], "-o", color="C3", ms=5, label="Pareto front")
-        for i in front:
-            ax.annotate(str(g.setting[i]), (g.seconds[i], shown[i]), fontsize=6, xytext=(3, 3),
-                        textcoords="offset points")
-        ax.set_xlim(g.seconds.min() / 1.6, g.seconds.max() * 1.6)
-        ax.set_ylim(floor / 3, ceiling * 3)
-        ax.yaxis.set_minor_formatter(NullFormatter())
-        ax.tick_params(axis="x", which="both", labelsize=6, labelrotation=40)
-        ax.set_title(name, fontsize=9)
-        unit = g.error_unit.iloc[0]
-        ax.set_xlabel("wall time of one call (s)")
-        ax.set_ylabel("relative error against the reference" if unit == "relative"
-                      else f"error against the reference ({unit})")
-        ax.grid(alpha=0.3, which="both")
-    for ax in list(axes.flat)[len(groups):]:
-        ax.axis("off")
-    axes.flat[0].legend(fontsize=6)
-    fig.tight_layout()
-    fig.savefig(path, dpi=90)
-    plt.close(fig)
+# ------------------------------------------------------------------ the figure (bench.png)
+
+#: a knob gets a panel when at least this many of its settings have a finite error, of two values
+#: or more (the others, two settings or all alike, are told in the caption and the tables)
+PANEL_SETTINGS = 3
+#: a sweep's series: colours by the last part of their names, lines by the first ("coupled, 20 deg")
+SERIES_COLOURS = ("darkviolet", "tab:green", "tab:blue", "tab:brown", "tab:olive", "tab:cyan")
+SERIES_LINES = (dict(ls="-", marker="o", ms=4), dict(ls="--", marker="x", ms=6), dict(ls=":", marker="s", ms=4))
+#: the looks: the Pareto front (a band under the points, its settings ringed), a setting, an error 0
+#: (at the floor), a failed setting (at the ceiling)
+LOOKS = {"band": dict(color="tab:red", lw=6, alpha=0.3, solid_capstyle="round", zorder=1),
+         "front": dict(marker="o", ms=10, mfc="none", mec="tab:red", mew=1.5, ls="none", zorder=5),
+         "setting": dict(color="0.35", marker="o", ls="none", ms=5, zorder=2),
+         "zero": dict(color="k", marker="v", ls="none", ms=7, zorder=4),
+         "failed": dict(color="k", marker="X", ls="none", ms=7, zorder=4)}
+LOOK_WORDS = {"band": "the Pareto front", "front": "a setting on it", "setting": "a setting",
+              "zero": "error 0 (the reference or as good), at the floor", "failed": "failed, at the ceiling"}
+
+
+def series_of_setting(setting: str) -> tuple[str, str]:
+    """A sweep's setting "n = 10, coupled, 20 deg" as (its series "coupled, 20 deg", its point "n = 10")."""
+    point, _, series = setting.partition(", ")
+    return series, point
+
+
+def paneled(knobs: pd.DataFrame) -> tuple[list, list]:
+    """The knobs (name, rows) that get a panel, and the others (``PANEL_SETTINGS``)."""
+    drawn, told = [], []
+    for name, g in knobs.groupby("subject", sort=False):
+        finite = g.error[np.isfinite(g.error.astype(float))]
+        (drawn if len(finite) >= PANEL_SETTINGS and finite.nunique() > 1 else told).append((name, g))
+    return drawn, told
+
+
+def error_label(unit: str) -> str:
+    """The error axis in words with its unit; a knob whose error mixes variables of two units says so."""
+    if unit == "relative":
+        return "relative error against the reference"
+    units = [u.strip() for u in unit.split(",")]
+    if len(units) == 1:
+        return f"error against the reference ({unit})"
+    return f"error against the reference\n(each variable's unit: {' or '.join(units)})"
+
+
+def _time_ticks(ax, low: float, high: float) -> None:
+    """Label the log time axis (ms) at the sparsest of 1, 1-3, 1-2-5 per decade that gives two
+    ticks or more in the view [low, high] (else at 2-9, every other), as plain numbers."""
+    decades = range(int(np.floor(np.log10(low))), int(np.ceil(np.log10(high))) + 1)
+    for subs in ((1,), (1, 3), (1, 2, 5), (2, 4, 6, 8)):
+        ticks = [m * 10.0 ** e for e in decades for m in subs if low <= m * 10.0 ** e <= high]
+        if len(ticks) >= 2:
+            break
+    ax.set_xticks(ticks, [f"{t:g}" for t in ticks])
+    ax.xaxis.set_minor_formatter("")
+
+
+def _draw_knob(ax, g: pd.DataFrame, series: Callable | None) -> tuple[dict, list, np.ndarray]:
+    """One knob's panel: error against time (ms), the front a band under the points; returns its
+    legend handles, the points to label (x, y, text; front first) and every point (x, y).  A knob
+    with ``series`` (a sweep) has a line per series and labels on the front only; another knob, a
+    label on every setting."""
+    error, ms = g.error.astype(float), 1e3 * g.seconds.astype(float)
+    positive = error[np.isfinite(error) & (error > 0)]
+    floor, ceiling = (positive.min() / 10, positive.max() * 10) if len(positive) else (1e-16, 1.0)
+    shown = error.where(np.isfinite(error), ceiling).clip(lower=floor)
+    front = g.pareto.astype(bool)
+    order = ms[front].sort_values().index
+    handles = {}
+    handles[LOOK_WORDS["band"]], = ax.loglog(ms[order], shown[order], **LOOKS["band"])
+    if series:
+        names = [series(s) for s in g.setting]
+        lasts = list(dict.fromkeys(n[0].rpartition(", ")[2] for n in names))
+        firsts = list(dict.fromkeys(n[0].partition(", ")[0] for n in names))
+        for label in dict.fromkeys(n[0] for n in names):
+            at = [k for k, n in enumerate(names) if n[0] == label]
+            style = dict(SERIES_LINES[firsts.index(label.partition(", ")[0]) % len(SERIES_LINES)],
+                         color=SERIES_COLOURS[lasts.index(label.rpartition(", ")[2]) % len(SERIES_COLOURS)])
+            handles[label], = ax.loglog(ms.iloc[at], shown.iloc[at], lw=1.5, zorder=2, **style)
+        text = {i: n[1] for i, n in zip(g.index, names)}
+    else:
+        text = dict(zip(g.index, g.setting.astype(str)))
+        ordinary = np.isfinite(error) & (error > 0)
+        handles[LOOK_WORDS["setting"]], = ax.loglog(ms[ordinary], shown[ordinary], **LOOKS["setting"])
+    handles[LOOK_WORDS["front"]], = ax.loglog(ms[order], shown[order], **LOOKS["front"])
+    for kind, where in (("zero", error <= 0), ("failed", ~np.isfinite(error))):
+        if where.any():
+            handles[LOOK_WORDS[kind]], = ax.loglog(ms[where], shown[where], **LOOKS[kind])
+    low, high = ms.min() / 1.6, ms.max() * 4.0              # room on the right for the labels
+    ax.set_xlim(low, high)
+    ax.set_ylim(shown.min() / (10 if (error <= 0).any() else 4), shown.max() * 10)
+    _time_ticks(ax, low, high)
+    ax.yaxis.set_minor_formatter("")
+    ax.grid(alpha=0.3, which="major")
+    labelled = [*order, *(i for i in g.index if i not in order and not series)]
+    return handles, [(ms[i], shown[i], text[i]) for i in labelled], np.column_stack([ms, shown])
+
+
+# ------------------------------------------------------------------ its point labels
+
+def _spots(px: float, py: float, w: float, h: float, distances: tuple):
+    """Lower-left corners of a w x h label around the point (px, py), nearest first: right, left,
+    above, below and the four corners, then (farther than the first distance) eight directions
+    between them, at each of ``distances`` (display pixels)."""
+    for d in distances:
+        e = 0.7 * d
+        yield from ((px + d, py - h / 2), (px - d - w, py - h / 2), (px - w / 2, py + d), (px - w / 2, py - d - h),
+                    (px + e, py + e), (px + e, py - e - h), (px - e - w, py + e), (px - e - w, py - e - h))
+        if d > distances[0]:
+            for angle in np.radians(np.arange(22.5, 360.0, 45.0)):
+                cx, cy = px + d * np.cos(angle), py + d * np.sin(angle)
+                yield (cx if cx >= px else cx - w), (cy if cy >= py else cy - h)
+
+
+#: distances (px) of a label beside its point, and of one joined to it by a thin line
+NEAR, FAR = (10.0, 14.0, 19.0), (30.0, 45.0, 60.0, 80.0, 100.0)
+
+
+def _distance(box: tuple, xy: np.ndarray) -> np.ndarray:
+    """Display distance from the box (x0, y0, x1, y1) to each point."""
+    dx = np.maximum.reduce([box[0] - xy[:, 0], np.zeros(len(xy)), xy[:, 0] - box[2]])
+    dy = np.maximum.reduce([box[1] - xy[:, 1], np.zeros(len(xy)), xy[:, 1] - box[3]])
+    return np.hypot(dx, dy)
+
+
+def _nearest(box: tuple, px: float, py: float, others: np.ndarray) -> bool:
+    """Whether a label in ``box`` reads as the point (px, py)'s: no other point nearer the box,
+    and every other point farther from its centre."""
+    centre = np.array([(box[0] + box[2]) / 2, (box[1] + box[3]) / 2])
+    return bool((_distance(box, np.array([[px, py]]))[0] <= _distance(box, others)).all()
+                and (np.hypot(*(centre - [px, py])) < np.hypot(*(centre - others).T)).all())
+
+
+def place_labels(ax, renderer, labels: list[tuple[float, float, str]], points: np.ndarray) -> int:
+    """Write each label (9 pt) beside its point (data coordinates) at the first spot (``_spots``)
+    inside the axes that covers no curve or point and no label already placed: ``NEAR`` where it
+    lies nearer its own point than any other of ``points`` (x, y: the panel's settings), else
+    ``FAR``, joined to its point by a thin line that crosses no label; returns how many found no
+    spot (left unwritten)."""
+    from .figures import _data_points
+    inside = ax.get_window_extent(renderer).padded(-2.0)
+    data = _data_points(ax)
+    markers = ax.transData.transform(points)
+    placed, written, missed = [], [], 0
+    for x, y, words in labels:
+        px, py = ax.transData.transform((x, y))
+        if any(text == words and np.hypot(qx - px, qy - py) < 8.0 for qx, qy, text in written):
+            continue                                    # the same words at (nearly) the same point
+        others = markers[np.hypot(markers[:, 0] - px, markers[:, 1] - py) > 1.0]
+        label = ax.text(x, y, words, fontsize=9, ha="left", va="bottom")
+        extent = label.get_window_extent(renderer)
+        w, h = extent.width, extent.height
+
+        def free(box):
+            return (inside.x0 <= box[0] and box[2] <= inside.x1 and inside.y0 <= box[1] and box[3] <= inside.y1
+                    and not _hits(box, data, 4.0) and all(_apart(box, other) for other in placed))
+
+        near = (box for box in ((x0, y0, x0 + w, y0 + h) for x0, y0 in _spots(px, py, w, h, NEAR))
+                if free(box) and _nearest(box, px, py, others))
+        far = (box for box in ((x0, y0, x0 + w, y0 + h) for x0, y0 in _spots(px, py, w, h, FAR))
+               if free(box) and _clear_line(px, py, box, placed, others))
+        box = next(near, None)
+        joined = box is None
+        box = next(far, None) if joined else box
+        label.remove()
+        if box is None:
+            missed += 1
+            continue
+        at = tuple(ax.transData.inverted().transform((px + box[0] - extent.x0, py + box[1] - extent.y0)))
+        ax.text(*at, words, fontsize=9, ha="left", va="bottom")
+        if joined:
+            data = np.concatenate([data, _leader(ax, px, py, box)])
+        placed.append(box)
+        written.append((px, py, words))
+    return missed
+
+
+def _clear_line(px: float, py: float, box: tuple, placed: list, others: np.ndarray) -> bool:
+    """Whether the line from (px, py) to the centre of ``box`` passes through no placed label and
+    6 px or more from every other point (sampled every 2 px or less)."""
+    centre = np.array([(box[0] + box[2]) / 2, (box[1] + box[3]) / 2])
+    t = np.linspace(0.0, 1.0, 100)[:, None]
+    line = np.array([px, py]) + t * (centre - np.array([px, py]))
+    line = line[np.hypot(line[:, 0] - px, line[:, 1] - py) > 8.0]     # leaving its own point's cluster
+    near = (np.hypot(line[:, None, 0] - others[None, :, 0], line[:, None, 1] - others[None, :, 1]) < 6.0).any()
+    return not near and not any(_hits(other, line, 1.0) for other in placed)
+
+
+def _leader(ax, px: float, py: float, box: tuple) -> np.ndarray:
+    """Draw a thin line from the point (px, py) towards the nearest edge of the label's ``box``
+    (display pixels), clear of both (a patch: no curve of the data); returns its pixels, every 2."""
+    from matplotlib.patches import ConnectionPatch
+    end = np.array([min(max(px, box[0]), box[2]), min(max(py, box[1]), box[3])])
+    start = np.array([px, py])
+    length = np.hypot(*(end - start))
+    a, b = start + (end - start) * 6.0 / length, end - (end - start) * 2.0 / length
+    back = ax.transData.inverted()
+    ax.add_artist(ConnectionPatch(tuple(back.transform(a)), tuple(back.transform(b)), "data", color="0.4", lw=0.8))
+    return a + np.linspace(0.0, 1.0, max(2, int(length / 2)))[:, None] * (b - a)
+
+
+def _hits(box: tuple, xy: np.ndarray, pad: float) -> bool:
+    return bool(((xy[:, 0] > box[0] - pad) & (xy[:, 0] < box[2] + pad)
+                 & (xy[:, 1] > box[1] - pad) & (xy[:, 1] < box[3] + pad)).any())
+
+
+def _apart(a: tuple, b: tuple, pad: float = 2.0) -> bool:
+    return a[2] + pad <= b[0] or b[2] + pad <= a[0] or a[3] + pad <= b[1] or b[3] + pad <= a[1]
+
+
+def _quoted(setting) -> str:
+    """A setting as the caption lists it: quoted where it holds a comma."""
+    return f'"{setting}"' if "," in str(setting) else str(setting)
+
+
+def _error_words(error: float, unit: str) -> str:
+    """A setting's error as the caption tells it, with its unit ("in, rad": "(in or rad)")."""
+    if not np.isfinite(error):
+        return "failed"
+    if error == 0 or unit == "relative":
+        return f"{'relative ' if unit == 'relative' else ''}error {error:.2g}"
+    return f"error {error:.2g} " + (unit if "," not in unit else f"({unit.replace(', ', ' or ')})")
+
+
+def _told(name: str, g: pd.DataFrame) -> str:
+    """A knob without a panel in words: each setting's error and time."""
+    return f"{name}: " + ", ".join(f"{_quoted(r.setting)} {_error_words(r.error, r.error_unit)} "
+                                   f"({1e3 * r.seconds:.2g} ms)" for r in g.itertuples())
+
+
+def plot(frame: pd.DataFrame, path: Path, series: dict[str, Callable] | None = None) -> Path:
+    """bench.png: error against the wall time of one call, a panel per knob with three settings or
+    more of different errors (``paneled``), the Pareto front marked, each setting labelled (a
+    sweep's ``series``: setting -> (series, point label), a line per series and the front's
+    labels); an error 0 at the panel's floor, a failed setting at its ceiling.  The caption
+    names each front and tells the knobs without a panel."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from .figures import MAX_WIDTH_IN, save
+    from .report import panel_grid, top_legend
+    series = series or {}
+    drawn, told = paneled(frame[frame.kind == "knob"])
+    across = min(2, max(1, len(drawn)))
+    down = max(1, -(-len(drawn) // across))
+    fig, margins = panel_grid(MAX_WIDTH_IN, across, down, 2.6, "linkrepro bench: the error of each knob's "
+                              "settings against the wall time of one call", legend_rows=2, left=1.05, gap_across=1.0)
+    axes = fig.subplots(down, across, squeeze=False)
+    fig.subplots_adjust(**margins)
+    renderer = FigureCanvasAgg(fig).get_renderer()
+    handles, missed, fronts = {}, 0, []
+    for ax, (name, g) in zip(axes.flat, drawn):
+        drawn_handles, labels, points = _draw_knob(ax, g, series.get(name))
+        handles |= drawn_handles
+        ax.set_title(name)
+        ax.set_xlabel("wall time of one call (ms)")
+        ax.set_ylabel(error_label(g.error_unit.iloc[0]))
+        missed += place_labels(ax, renderer, labels, points)
+        fronts.append(f"{name}: {', '.join(map(_quoted, g.setting[g.pareto.astype(bool)]))}")
+    for ax in axes.flat[len(drawn):]:
+        ax.set_visible(False)
+    looks = [LOOK_WORDS[k] for k in LOOKS if LOOK_WORDS[k] in handles]
+    top_legend(fig, {label: handles[label] for label in [*looks, *(h for h in handles if h not in looks)]}, rows=2)
+    caption = ("Speed against error, a panel per knob with three settings or more of different errors: each "
+               "setting's error against the knob's reference setting (up) and the wall time of one call (across; "
+               "this run's, on a shared machine: read the ratios). Each point is a setting, labelled (a sweep of "
+               "many settings: a line per series, only the front's points labelled); the Pareto front (the "
+               "settings no other beats in both time and error) is a red band through its settings, each ringed; "
+               "an error 0 is drawn at the panel's floor, a failed setting at its "
+               f"ceiling. The fronts: {'; '.join(fronts) or 'none'}."
+               + (f" {missed} labels found no free spot and are left out." if missed else "")
+               + (f" Without a panel: {'; '.join(_told(name, g) for name, g in told)}." if told else ""))
+    return save(fig, path, caption)

@@ -47,7 +47,7 @@ def run_bench(repeat: int = 10, out: Path | str = Path("out/bench"), quick: bool
     out.mkdir(parents=True, exist_ok=True)
     md, png, csv = (out / name for name in OUTPUTS)
     frame.to_csv(csv, index=False)
-    plot(frame, png)
+    plot(frame, png, {sweep.name: sweep.series for sweep in sweep_list if sweep.series})
     text = markdown(frame, descriptions, repeat, time.perf_counter() - start, png.name)
     md.write_text(text)
     return text

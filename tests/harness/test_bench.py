@@ -12,8 +12,9 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 import pytest
+from PIL import Image
 
-from linkrepro.harness import bench, bench_run
+from linkrepro.harness import bench, bench_run, figures
 from linkrepro.harness.cli import main
 
 
@@ -77,7 +78,14 @@ def test_quick_bench_writes_its_three_files(tmp_path, monkeypatch):
     assert text.strip() == printed.strip()     # the markdown, then where it went (not a report folder)
     assert last.startswith(f"written: {out} ")
     assert "port (bugs) / legacy" in text and "legacy / limit" in text and "bench.png" in text
-    assert (out / "bench.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    # the figure: drawn and checked by figures.save (strict here: a broken rule fails the run), a
+    # panel per knob of three settings or more, every label placed; the others told in words
+    caption = figures.caption_of(out / "bench.png")
+    assert "1991 Newton tolerance: 0.01, 1e-07, 1e-13" in caption and "left out" not in caption
+    assert "Without a panel: K.E.D. precision: double error 0 (" in caption
+    assert "1991 Newton iteration cap: 10 failed (" in caption
+    with Image.open(out / "bench.png") as image:
+        assert image.mode == "P" and image.width <= figures.MAX_WIDTH_IN * figures.DPI
     # the port with the listings' bugs equals legacy on the tables' angles
     agree = costs[(costs.engine == "port_printed") & costs.subject.str.startswith("K.E.D.")].error
     assert (agree <= 1e-12).all()
@@ -95,3 +103,23 @@ def test_bench_out_that_is_a_file_is_a_usage_error(tmp_path):
 def test_run_bench_rejects_a_bad_repeat(tmp_path):
     with pytest.raises(ValueError):
         bench_run.run_bench(0, Path(tmp_path), quick=True)
+
+
+def test_the_figure_labels_every_setting_of_a_crowded_knob(tmp_path):
+    """bench.png on made-up knobs: settings a few pixels apart (each labelled, the figure checked
+    strictly), a sweep drawn as series, a knob of two settings told in the caption instead."""
+    def knob(name, points, engine="port_corrected"):
+        rows = [dict(kind="knob", subject=name, setting=setting, engine=engine, seconds=seconds, error=error,
+                     error_unit="in", reference=error == 0) for setting, seconds, error in points]
+        return bench.with_pareto_front(rows)
+    crowded = knob("crowded", [(f"L = {n}", 1e-3 * (1 + 0.02 * k), 10.0 ** -k if n < 72 else 0.0)
+                               for k, n in enumerate((6, 9, 12, 18, 24, 36, 72))])
+    sweep = knob("sweep", [(f"n = {n}, {model}, {step} deg", 1e-4 * n * (2 if step == 1 else 1),
+                            0.1 / n + (model == "listing"))
+                           for n in (1, 2, 5, 10) for model in ("coupled", "listing") for step in (10, 1)])
+    two = knob("two", [("double", 1e-3, 0.0), ("REAL*4", 1e-3, 1e-7)])
+    frame = pd.DataFrame(crowded + sweep + two).reindex(columns=bench.COLUMNS)
+    caption = figures.caption_of(bench.plot(frame, tmp_path / "bench.png", {"sweep": bench.series_of_setting}))
+    assert "crowded: L = 6, L = 9, L = 12, L = 18, L = 24, L = 36, L = 72" in caption
+    assert "left out" not in caption and caption.endswith('Without a panel: two: double error 0 (1 ms), REAL*4 '
+                                                          'error 1e-07 in (1 ms).')

@@ -11,6 +11,7 @@ import numpy as np
 from ....legacy import ali1977
 from ....port.ali1977 import CORRECTED, PRINTED, case2, case3, cognate_case1, source_case1
 from ...bench import TRANSCENDENTAL, Computation, Knob, Sweep, crank_grid, step_label, relative_error, with_pareto_front, mprd
+from ...bench import series_of_setting
 from .case3_convergence import case3_data
 
 #: four-bar position (half-angle), velocity, acceleration, beta by Cramer's rule (statements
@@ -124,4 +125,4 @@ def case3_rows(repeat: int) -> list[dict]:
 
 def sweeps(quick: bool) -> list[Sweep]:
     """Case III's sweep (48 settings; none when ``quick``)."""
-    return [] if quick else [Sweep(CASE3, CASE3_WHAT, case3_rows)]
+    return [] if quick else [Sweep(CASE3, CASE3_WHAT, case3_rows, series_of_setting)]
