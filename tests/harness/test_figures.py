@@ -1,6 +1,9 @@
 """The figure checker (harness/figures.py) on made-up figures: each rule it states is broken
-once and found; a figure that keeps them passes; a written PNG is a palette image."""
+once and found; a figure that keeps them passes; a written PNG is a palette image.  And every
+figure a run of the scenes writes: checked (strict), captioned, in reading order."""
 from __future__ import annotations
+
+import os
 
 import numpy as np
 import pytest
@@ -97,3 +100,35 @@ def test_a_tick_outside_a_log_view_is_not_counted():
     assert drawn(fig) == []
     outside = [tick.label1 for tick in axes[0].xaxis.get_major_ticks() if tick.get_loc() < axes[0].get_xlim()[0]]
     assert outside and {id(label) for label in outside} <= figures._undrawn_ticks(fig)
+
+
+#: every scene whose figures this project's harness draws (rahman1991-example's are its own tests')
+SCENES = ["ali1977-table1", "ali1977-table2", "ali1977-table3", "ali1977-appendixA", "ali1977-case3-convergence",
+          "ali1977-conditioning", "rahman1996-table5_1", "rahman1996-table5_2", "rahman1996-table5_3",
+          "rahman1996-table5_4", "rahman1996-table5_5", "rahman1996-table5_6", "rahman1996-table5_7",
+          "rahman1996-figures"]
+
+
+def test_every_figure_of_a_run_passed_the_checks_and_has_a_caption(tmp_path):
+    """Run the scenes with the checks strict (conftest): a figure that broke a rule would have
+    failed the run; every PNG was written by figures.save (a caption in words, a palette), reads
+    in a column of the page, and the scenes' folders hold their figures in reading order."""
+    from linkrepro.harness.cli import main
+    assert os.environ.get(figures.STRICT_ENV)
+    assert main(["reproduce", "--skip-readings", *SCENES, "--out", str(tmp_path)]) == 0
+    pngs = sorted(tmp_path.rglob("*.png"))
+    assert {p.parent.name for p in pngs} == set(SCENES) - {"rahman1996-table5_1"}    # Table 5.1: rows of text
+    for png in pngs:
+        assert len(figures.caption_of(png).split()) >= 20, png
+        with Image.open(png) as image:
+            assert image.mode == "P" and image.width <= figures.MAX_WIDTH_IN * figures.DPI, png
+    assert [p.name for p in sorted((tmp_path / "ali1977-appendixA").glob("*.png"))] == [
+        "case1.png", "case2.png", "case3.png"]
+
+
+def test_a_run_whose_figure_breaks_a_rule_fails(tmp_path, monkeypatch):
+    """The check above can fail: with every text declared too small, the same run raises."""
+    from linkrepro.harness.cli import main
+    monkeypatch.setattr(figures, "MIN_TEXT_PT", 30.0)
+    with pytest.raises(figures.FigureError, match=r"text .* at \d+ pt"):
+        main(["reproduce", "--skip-readings", "rahman1996-table5_2", "--out", str(tmp_path)])
