@@ -15,12 +15,6 @@ from .diff import EXPLAINED_BY, classify_cells, column_max, count_cells
 from .figures import ENGINE_STYLE, MAX_WIDTH_IN, RC, new_figure, save
 from .register import Deviation
 
-STYLE = {"published": dict(marker="o", ls="none", color="k", ms=4),
-         "printed": dict(marker="x", ls="none", color="tab:gray"),
-         "legacy": dict(ls="-", color="tab:blue"),
-         "port_printed": dict(ls="--", color="tab:orange"),
-         "port_corrected": dict(ls="-", color="tab:green", alpha=0.8)}
-
 
 def markdown_table(frame: pd.DataFrame, floatfmt: str = "{:.3g}") -> str:
     cols = [str(c) for c in frame.columns]
@@ -158,24 +152,9 @@ def _table_facts(scene, published, results: dict[str, pd.DataFrame]) -> list[str
     return facts
 
 
-def curve_figure(curves: list[tuple], xlabel: str, ylabel: str, title: str, path: Path) -> Path:
-    """The one style of every curve plot: curves (x, y, label, plot style) on one 6.4 x 3.6 in
-    axes, labelled, gridded, with a legend; saved as PNG."""
-    fig = Figure(figsize=(6.4, 3.6))
-    ax = fig.add_subplot()
-    for x, y, label, style in curves:
-        ax.plot(x, y, label=label, **style)
-    ax.set_xlabel(xlabel)
-    ax.set_ylabel(ylabel)
-    ax.set_title(title, fontsize=10)
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=7)
-    return save_png(fig, path, left=0.155, right=0.977, bottom=0.165, top=0.905)
-
-
 def save_png(fig: Figure, path: Path, **margins) -> Path:
-    """Save at 90 dpi with fixed margins (fig.subplots_adjust: tight_layout would cost as much
-    as the drawing, and a second drawing in savefig); fast zlib level, the same pixels."""
+    """Save at 90 dpi with fixed margins, unchecked: kept for the committed
+    harness/scenes/rahman1991/figures.py until its figures use figures.save."""
     fig.subplots_adjust(**margins)
     fig.savefig(path, dpi=90, pil_kwargs={"compress_level": 1})
     return path
