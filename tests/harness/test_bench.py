@@ -81,9 +81,11 @@ def test_quick_bench_writes_its_three_files(tmp_path, monkeypatch):
     # the figure: drawn and checked by figures.save (strict here: a broken rule fails the run), a
     # panel per knob of three settings or more, every label placed; the others told in words
     caption = figures.caption_of(out / "bench.png")
-    assert "1991 Newton tolerance: 0.01, 1e-07, 1e-13" in caption and "left out" not in caption
-    assert "Without a panel: K.E.D. precision: double error 0 (" in caption
-    assert "1991 Newton iteration cap: 10 failed (" in caption
+    fronts, told = caption.split("The fronts: ")[1].split(" Without a panel: ")        # which: timing-free
+    assert [f.split(": ")[0] for f in fronts.split("; ")] == [
+        "K.E.D. angle step", "1991 angle step", "1991 Newton tolerance", "1991 Newton precision", "CSSP positions L"]
+    assert "left out" not in caption
+    assert told.startswith("K.E.D. precision: double error 0 (") and "1991 Newton iteration cap: 10 failed (" in told
     with Image.open(out / "bench.png") as image:
         assert image.mode == "P" and image.width <= figures.MAX_WIDTH_IN * figures.DPI
     # the port with the listings' bugs equals legacy on the tables' angles
