@@ -109,16 +109,13 @@ def analyse(inputs: GscInputs = GscInputs(), crank_deg=CRANK_DEG, quirks: GscQui
     converged = np.isin(status, [position.NEWTON, position.DFP_THEN_NEWTON, "closed", DEAD_CENTRE])
     if strict:
         _raise_first(status, np.degrees(th))
-    frame = pd.DataFrame({"a4": inputs.a4, "alpha4_deg": inputs.alpha4_deg, "s1": inputs.s1,
-                          "crank_deg": np.degrees(th), "converged": converged})
-    frame["s4"] = q[:, 4]
-    frame["theta2"], frame["theta3"] = np.degrees(np.mod(q[:, 0], 2 * np.pi)), np.degrees(np.mod(q[:, 2], 2 * np.pi))
-    frame["eta2"], frame["eta3"] = np.degrees(q[:, 1]), np.degrees(q[:, 3])
-    for name in gsc_forces.COMPONENTS:
-        frame[name] = forces[name]
-    frame = frame[COLUMNS].copy()
-    frame["status"], frame["closure"], frame["iterations"] = status, closure, iterations
-    return frame
+    n = th.size                      # built in one go (a column set at a time costs more than the analysis)
+    return pd.DataFrame({"a4": np.full(n, inputs.a4), "alpha4_deg": np.full(n, inputs.alpha4_deg),
+                         "s1": np.full(n, inputs.s1), "crank_deg": np.degrees(th), "converged": converged,
+                         "s4": q[:, 4], "theta2": np.degrees(np.mod(q[:, 0], 2 * np.pi)), "eta2": np.degrees(q[:, 1]),
+                         "theta3": np.degrees(np.mod(q[:, 2], 2 * np.pi)), "eta3": np.degrees(q[:, 3]),
+                         **{name: forces[name] for name in gsc_forces.COMPONENTS},
+                         "status": status.astype(object), "closure": closure, "iterations": iterations})
 
 
 def _raise_first(status: np.ndarray, deg: np.ndarray) -> None:
