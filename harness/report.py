@@ -152,14 +152,6 @@ def _table_facts(scene, published, results: dict[str, pd.DataFrame]) -> list[str
     return facts
 
 
-def save_png(fig: Figure, path: Path, **margins) -> Path:
-    """Save at 90 dpi with fixed margins, unchecked: kept for the committed
-    harness/scenes/rahman1991/figures.py until its figures use figures.save."""
-    fig.subplots_adjust(**margins)
-    fig.savefig(path, dpi=90, pil_kwargs={"compress_level": 1})
-    return path
-
-
 def draw_all(draw, jobs: list[tuple]) -> list:
     """[draw(*job) for job in jobs], the figures drawn side by side: in a pool of os.cpu_count()
     forked processes (draw module-level, jobs picklable) when there are several jobs and cores
