@@ -86,7 +86,6 @@ def plot_scene(scene, published, results: dict[str, pd.DataFrame], outdir: Path)
     the key column; the legend above the panels."""
     if not isinstance(scene.key, str):
         return []                          # rows named by text (Table 5.1): the CSVs say it all
-    frames = {"published": published.values, **results}
     columns = len(scene.values)
     across = min(columns, 4)
     down = -(-columns // across)
@@ -96,10 +95,14 @@ def plot_scene(scene, published, results: dict[str, pd.DataFrame], outdir: Path)
                               title_lines=max(t.count("\n") + 1 for t in titles))
     axes = fig.subplots(down, across, squeeze=False, sharex=True)
     key = scene.describe(scene.key)
+    off_scale = []
     for ax, col, title in zip(axes.flat, scene.values, titles):
-        for engine, frame in frames.items():
-            if engine == "published" or frame[col].notna().any():
+        for engine, frame in results.items():
+            if frame[col].notna().any():
                 ax.plot(frame[scene.key].to_numpy(), frame[col].to_numpy(), label=engine, **ENGINE_STYLE[engine])
+        off = _published_points(ax, published.values[scene.key], published.values[col],
+                                [frame[col] for frame in results.values()])
+        off_scale += [f"{scene.describe(col).words} at {k:g} {key.unit}: {v:g}" for k, v in off.items()]
         ax.set_title(title, y=1.0)        # placed above the axes: matplotlib does not fit it (a layout pass)
         ax.set_ylabel(scene.describe(col).unit or "pure number")
         ax.grid(alpha=0.3)
@@ -109,11 +112,41 @@ def plot_scene(scene, published, results: dict[str, pd.DataFrame], outdir: Path)
         ax.set_xlabel(key.label)
         ax.xaxis.set_tick_params(labelbottom=True)
     handles = {label: handle for ax in axes.flat for handle, label in zip(*ax.get_legend_handles_labels())}
-    top_legend(fig, handles)
+    top_legend(fig, {label: handles[label] for label in sorted(handles, key=lambda h: h != "published")})
     caption = (f"{scene.title}: every column of the table against {key.label}, one panel per column (its "
                f"words above it, its unit on the axis); black dots the table as published, a line or mark per "
-               f"engine (the legend). " + " ".join(_table_facts(scene, published, results)))
+               f"engine (the legend). " + " ".join(_table_facts(scene, published, results))
+               + (f" Published cells so far off the engines' curves that drawn to scale they would flatten them, "
+                  f"drawn as a triangle at the panel's edge: {'; '.join(off_scale)}." if off_scale else ""))
     return [save(fig, outdir / "table.png", caption, **margins)]
+
+
+#: a published cell farther than this many times its panel's curves' span beyond them is off the scale
+OFF_SCALE_SPANS = 1.0
+#: the look of a published cell off the scale: a triangle at the panel's edge, pointing out
+OFF_SCALE = dict(color="k", ls="none", ms=6, clip_on=False, zorder=4)
+
+
+def _published_points(ax, keys: pd.Series, values: pd.Series, curves: list[pd.Series]) -> dict:
+    """Draw the published cells of one panel over the engines' ``curves``; a cell so far off them
+    (``OFF_SCALE_SPANS``) that it would flatten the curves is drawn at the panel's edge as a
+    triangle pointing its way, the panel scaled to the rest; returns those cells, key -> value."""
+    drawn = pd.concat(curves).dropna()
+    low, high = (drawn.min(), drawn.max()) if len(drawn) else (values.min(), values.max())
+    span = (high - low) or abs(high) or 1.0
+    off = (values < low - OFF_SCALE_SPANS * span) | (values > high + OFF_SCALE_SPANS * span)
+    ax.plot(keys[~off].to_numpy(), values[~off].to_numpy(), label="published", **ENGINE_STYLE["published"])
+    if off.any():
+        shown = pd.concat([drawn, values[~off]]).dropna()
+        pad = 0.06 * ((shown.max() - shown.min()) or span)
+        bottom, top = shown.min() - pad, shown.max() + pad
+        ax.set_ylim(bottom, top)
+        for below in (True, False):
+            at = off & ((values < low) if below else (values > high))
+            if at.any():
+                ax.plot(keys[at].to_numpy(), [bottom if below else top] * int(at.sum()), marker="v" if below else "^",
+                        label="published, off the scale", **OFF_SCALE)
+    return dict(zip(keys[off], values[off]))
 
 
 def _table_facts(scene, published, results: dict[str, pd.DataFrame]) -> list[str]:
