@@ -260,7 +260,7 @@ def draw_figure(path: Path, title: str, rows: list[Row], caption: str, row_h: fl
     axes[0].xaxis.set_major_locator(NullLocator())        # shared: no tick objects on any row (each costs ...
     for ax, data in zip(axes, rows):
         draw_row(ax, data)
-        ax.set_ylabel(data.label, rotation=0, ha="right", va="center")     # across: rows are low
+        ax.set_ylabel(data.label, rotation=0, ha="right", va="center", labelpad=12)   # across: rows are low
         ax.spines[:].set_visible(False)
     last = axes[-1]                                       # ... more than its curves): under the last
     ticks = [k * STEP + deg for k in range(len(FAMILIES)) for deg in CRANK_TICKS]  # row, marks and labels
