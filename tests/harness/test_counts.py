@@ -148,7 +148,11 @@ def _markdown_table(lines: list[str], after: str) -> pd.DataFrame:
 
 
 def _as_shown(counts: pd.DataFrame) -> pd.DataFrame:
-    return counts.rename(columns=lambda c: f"explained: {c}" if c in EXPLAINED_BY else c)
+    return counts.rename(columns=_as_shown_name)
+
+
+def _as_shown_name(column: str) -> str:
+    return f"explained: {column}" if column in EXPLAINED_BY else column
 
 
 def _same(shown: pd.DataFrame, counts: pd.DataFrame) -> None:
@@ -217,7 +221,7 @@ class _Page(HTMLParser):
         elif tag == "tr" and self._in == "overview":
             self._row = []
         elif tag in ("td", "th") and self._row is not None:
-            self._text = []
+            self._text, self._count = [], attrs.get("data-count")
         if tag == "td" and "cell" in (attrs.get("class") or "").split():
             self.cells.append({k[5:]: v for k, v in attrs.items() if k.startswith("data-") and k != "data-cell"})
 
@@ -226,8 +230,8 @@ class _Page(HTMLParser):
             self._text.append(data)
 
     def handle_endtag(self, tag):
-        if tag in ("td", "th") and self._row is not None:
-            self._row.append("".join(self._text).strip())
+        if tag in ("td", "th") and self._row is not None:       # (the count it shows, or None; its text)
+            self._row.append((self._count, "".join(self._text).strip()))
             self._text = None
         elif tag == "tr" and self._row is not None:
             self.overview.append(self._row)
@@ -242,10 +246,12 @@ def test_html_overview_shows_the_counts(fresh, expected):
     out, _ = fresh
     page = _Page()
     page.feed((out / "report.html").read_text())
-    head, *rows = page.overview
-    assert head[:2] == ["scene", "engine"]
-    shown = pd.DataFrame([r[1:] for r in rows], columns=head[1:]).set_index("engine").astype(int)
-    assert {r[0] for r in rows} == {SCENE}
+    first, second, *rows = page.overview                     # two header rows: explained's kinds under it
+    assert [text for _, text in first[:2]] == ["scene", "engine"] and (None, "explained") in first
+    assert {count for count, _ in second} <= {"explained", *EXPLAINED_BY}
+    assert {row[0][1] for row in rows} == {SCENE}
+    shown = pd.DataFrame([{"engine": row[1][1], **{_as_shown_name(c): t for c, t in row[2:]}} for row in rows])
+    shown = shown.set_index("engine").astype(int)
     _same(shown, expected)
     assert page.total.endswith(f": {headline(expected.sum(axis=0), by_kind=True)}.")
     numbers = _adds_up(page.total.split(": ", 1)[1].rstrip("."))
