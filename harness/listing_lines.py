@@ -137,6 +137,13 @@ def seed_lines(file: str) -> tuple[str | None, dict[int, int]]:
     return config["seed"], found
 
 
+def align_every_listing() -> None:
+    """Compute ``seed_lines`` for every printed listing now (about 0.4 s): a process that forks
+    workers calls it first, so that they and its report share one alignment."""
+    for path in sorted((ROOT / "legacy" / "printed").glob("*.f")):
+        seed_lines(path.name)
+
+
 def _flatten(cards: list[list[str]], first: int, last: int) -> tuple[list[str], list[int]]:
     """The tokens of cards[first:last] in one list, and the index of the card of each."""
     tokens, where = [], []

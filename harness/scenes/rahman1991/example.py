@@ -12,10 +12,8 @@ lost near theta2 = 0), legacy.csv (the 1996 build on these inputs), the figures,
 from __future__ import annotations
 
 import functools
-import gc
 import itertools
 import time
-from contextlib import contextmanager
 from pathlib import Path
 
 import numpy as np
@@ -243,23 +241,7 @@ def legacy_on_grid(printed: pd.DataFrame) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
-@contextmanager
-def _long_lived_frozen():
-    """Python's full collections skip what exists on entry (the imported modules, the compiled
-    kernels: some 250 000 objects, walked at each full collection, 0.15-0.3 s a run) until exit."""
-    gc.freeze()
-    try:
-        yield
-    finally:
-        gc.unfreeze()
-
-
 def run(out_dir: Path) -> dict:
-    with _long_lived_frozen():
-        return _run(out_dir)
-
-
-def _run(out_dir: Path) -> dict:
     target = out_dir / NAME
     target.mkdir(parents=True, exist_ok=True)
     timings, frames = {}, {}
