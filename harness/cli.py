@@ -16,6 +16,8 @@ import os
 import sys
 from pathlib import Path
 
+from .. import __version__
+
 PROG = "linkrepro"
 
 
@@ -66,6 +68,7 @@ def _parser() -> tuple[_Parser, dict[str, _Parser], dict]:
     parser = _Parser(prog=PROG, description=(
         "Rebuild, port and diff the FORTRAN of three mechanism-dynamics theses."),
         epilog="Exit status: 0 done, 1 a run failed, 2 a usage error, 130 interrupted.")
+    parser.add_argument("--version", action="version", version=f"{PROG} {__version__}")
     names = ["reproduce", "scenes", "explain", "bench", *theirs]
     sub = parser.add_subparsers(dest="command", required=True, metavar="{" + ",".join(names) + "}")
     rep = sub.add_parser("reproduce", help="run every engine of the scenes and write the report")
