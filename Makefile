@@ -14,6 +14,8 @@ reproduce: $(VENV)/.installed
 
 test: $(VENV)/.installed
 	$(BIN)/python -m pytest -q -n auto tests
+	$(BIN)/linkrepro reproduce --out out/verify > /dev/null
+	$(BIN)/linkrepro verify --out out/verify
 
 bench: $(VENV)/.installed
 	$(BIN)/linkrepro bench --out out/bench

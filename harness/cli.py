@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import argparse
 import difflib
+import math
 import os
 import sys
 from pathlib import Path
@@ -69,7 +70,7 @@ def _parser() -> tuple[_Parser, dict[str, _Parser], dict]:
         "Rebuild, port and diff the FORTRAN of three mechanism-dynamics theses."),
         epilog="Exit status: 0 done, 1 a run failed, 2 a usage error, 130 interrupted.")
     parser.add_argument("--version", action="version", version=f"{PROG} {__version__}")
-    names = ["reproduce", "scenes", "explain", "bench", *theirs]
+    names = ["reproduce", "scenes", "explain", "bench", "verify", *theirs]
     sub = parser.add_subparsers(dest="command", required=True, metavar="{" + ",".join(names) + "}")
     rep = sub.add_parser("reproduce", help="run every engine of the scenes and write the report")
     rep.add_argument("scenes", nargs="*", help="scene names (default: all; see `linkrepro scenes`)")
@@ -97,7 +98,17 @@ def _parser() -> tuple[_Parser, dict[str, _Parser], dict]:
     bench.add_argument("--quick", action="store_true",
                        help="a reduced configuration (the tables' 19 angles, three settings a knob, no Case III "
                             "sweep): a smoke test of a few seconds")
-    subparsers = {"reproduce": rep, "scenes": scenes, "explain": explain, "bench": bench}
+    verify = sub.add_parser("verify", help="compare a run's scene CSVs with the stored run of record, cell by "
+                            "cell (identical, within the policy, moved, status changed)")
+    verify.add_argument("scenes", nargs="*", help="scenes to compare (default: every scene run into --out)")
+    verify.add_argument("--out", default=Path("out"), type=_out_folder, help="the run's output folder (default: out/)")
+    verify.add_argument("--reference", type=Path, default=None,
+                        help="the run of record (default: the reference/ the package carries)")
+    verify.add_argument("--units", type=float, default=1.0,
+                        help="across toolchains, units of the last written digit a number may move (default 1)")
+    verify.add_argument("--refresh", action="store_true",
+                        help="print the comparison, then make --out's scenes the reference")
+    subparsers = {"reproduce": rep, "scenes": scenes, "explain": explain, "bench": bench, "verify": verify}
     for command in theirs.values():
         own = sub.add_parser(command.name, help=command.help)
         own.add_argument("--out", default=command.default_out, type=_out_folder, help=command.out_help)
@@ -245,6 +256,31 @@ def _bench(args: argparse.Namespace) -> int:
     return status or _report_of_parent(args.out, "bench")
 
 
+def _verify(args: argparse.Namespace) -> int:
+    """``linkrepro verify``: 0 every cell keeps the policy, 1 one does not, 2 a usage error
+    (no or a damaged reference, no scene run in --out); ``--refresh`` prints the comparison
+    first, then replaces the reference."""
+    from .verify import REFERENCE_DIR, VerifyError, describe, refresh, verify
+    reference = args.reference or REFERENCE_DIR
+    if not math.isfinite(args.units) or args.units < 0:
+        _error("--units must be a number >= 0")
+        return 2
+    try:
+        if args.refresh and not reference.exists():
+            verdict = None
+        else:
+            verdict = verify(args.out, reference, args.units, args.scenes or None)
+            _out(describe(verdict))
+        if args.refresh:
+            size = refresh(args.out, reference)
+            _out(f"reference: {reference} now holds the scenes of {args.out} ({size / 1e6:.1f} MB)")
+            return 0
+    except VerifyError as exc:
+        _error(str(exc))
+        return 2
+    return 1 if verdict.failed else 0
+
+
 def _report_of_parent(out: Path, folder: str) -> int:
     """After a command that wrote ``out``: where ``out`` is a report folder's ``folder`` (its
     default, e.g. out/bench), rebuild that folder's report (which shows it) and name it;
@@ -276,6 +312,8 @@ def _main(argv: list[str] | None) -> int:
         return _explain(args, commands["explain"])
     if args.command == "bench":
         return _bench(args)
+    if args.command == "verify":
+        return _verify(args)
     if args.command in theirs:          # a thesis's own command (harness/command.py)
         command = theirs[args.command]
         status = _write_outputs(args.out, command.outputs, f"linkrepro {command.name}", lambda: command.run(args),

@@ -18,7 +18,8 @@ import numpy as np
 import pandas as pd
 
 
-def _timing(column: str) -> bool:
+def is_timing(column: str) -> bool:
+    """A column of measured times (its name says "seconds" or "time"): never compared."""
     return "seconds" in column or "time" in column
 
 
@@ -30,7 +31,7 @@ def compare_csv(before: Path, after: Path, tol: float) -> tuple[float, list[str]
         return np.inf, [f"shape or columns differ: {a.shape} {list(a.columns)[:5]}... vs {b.shape}"]
     worst, problems = 0.0, []
     for col in a.columns:
-        if _timing(col):
+        if is_timing(col):
             continue
         x, y = a[col], b[col]
         if pd.api.types.is_numeric_dtype(x) and pd.api.types.is_numeric_dtype(y):

@@ -1,0 +1,120 @@
+"""linkrepro verify (harness/verify.py): a run against a stored run of record, cell by cell."""
+from __future__ import annotations
+
+import contextlib
+import io
+import json
+import lzma
+import shutil
+from pathlib import Path
+
+import pytest
+
+from linkrepro.harness import verify as verify_mod
+from linkrepro.harness.cli import main
+from linkrepro.harness.run import reproduce
+
+SCENES = ["rahman1996-table5_1", "ali1977-table1"]
+
+
+@pytest.fixture(scope="module")
+def recorded(tmp_path_factory) -> tuple[Path, Path]:
+    """A run of two scenes, and a reference made of it by --refresh."""
+    root = tmp_path_factory.mktemp("verify")
+    reproduce(SCENES, root / "run", measure_readings=False)
+    assert _cli("verify", "--out", str(root / "run"), "--reference", str(root / "ref"), "--refresh")[0] == 0
+    return root / "run", root / "ref"
+
+
+def _cli(*argv: str) -> tuple[int, str, str]:
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        status = main(list(argv))
+    return status, out.getvalue(), err.getvalue()
+
+
+@pytest.fixture
+def run(recorded, tmp_path) -> Path:
+    """A copy of the recorded run to change."""
+    return Path(shutil.copytree(recorded[0], tmp_path / "run"))
+
+
+def _edit(path: Path, row: int, column: str, change) -> str:
+    """Change one cell of a CSV's text (``change(text) -> text``); returns the old text."""
+    lines = path.read_text().splitlines()
+    head = lines[0].split(",")
+    cells = lines[row + 1].split(",")
+    old = cells[head.index(column)]
+    cells[head.index(column)] = change(old)
+    lines[row + 1] = ",".join(cells)
+    path.write_text("\n".join(lines) + "\n")
+    return old
+
+
+def _manifest(folder: Path, **fields) -> None:
+    (folder / "manifest.json").write_text(json.dumps({"format": 1, **fields}))
+
+
+def test_the_recorded_run_is_identical_to_its_reference(recorded):
+    status, text, _ = _cli("verify", "--out", str(recorded[0]), "--reference", str(recorded[1]))
+    assert status == 0 and text.rstrip().endswith("0 moved, 0 status changed: ok")
+    assert {p.name for p in recorded[1].iterdir()} == set(SCENES)
+    stored = recorded[1] / "ali1977-table1" / "legacy.csv.xz"
+    assert lzma.decompress(stored.read_bytes()) == (recorded[0] / "ali1977-table1" / "legacy.csv").read_bytes()
+
+
+def test_a_number_one_unit_off_moves_on_the_same_toolchain_and_not_across(recorded, run):
+    ref = Path(shutil.copytree(recorded[1], run.parent / "ref"))
+    old = _edit(run / "ali1977-table1" / "legacy.csv", 4, "src_dx",
+                lambda t: t[:-1] + str((int(t[-1]) + 1) % 10) if t[-1] != "9" else t[:-1] + "8")
+    _manifest(ref, gfortran="GNU Fortran 12", numpy="2.0")
+    _manifest(run, gfortran="GNU Fortran 12", numpy="2.0", started="later")       # the same toolchain
+    status, text, _ = _cli("verify", "--out", str(run), "--reference", str(ref))
+    assert status == 1 and "ali1977-table1/legacy.csv: 1 moved" in text and f"row 5, src_dx: reference {old!r}" in text
+    _manifest(run, gfortran="GNU Fortran 13", numpy="2.0")                          # another one
+    status, text, _ = _cli("verify", "--out", str(run), "--reference", str(ref))
+    assert status == 0 and "manifest field gfortran: reference 'GNU Fortran 12', run 'GNU Fortran 13'" in text
+    assert "1 within the policy" in text
+    assert _cli("verify", "--out", str(run), "--reference", str(ref), "--units", "0.5")[0] == 1
+
+
+def test_a_status_that_changes_fails_under_any_policy(recorded, run):
+    diff = run / "rahman1996-table5_1" / "diff.csv"
+    _edit(diff, 0, "status", lambda t: "unexplained" if t != "unexplained" else "match")
+    status, text, _ = _cli("verify", "--out", str(run), "--reference", str(recorded[1]), "--units", "1e9")
+    assert status == 1 and "rahman1996-table5_1/diff.csv: 0 moved, 1 status changed" in text
+
+
+def test_a_missing_or_new_csv_is_named(recorded, run):
+    (run / "ali1977-table1" / "identities.csv").unlink()
+    shutil.copyfile(run / "ali1977-table1" / "legacy.csv", run / "ali1977-table1" / "extra.csv")
+    status, text, _ = _cli("verify", "--out", str(run), "--reference", str(recorded[1]))
+    assert status == 1 and "identities.csv: missing in the run" in text and "extra.csv: not in the reference" in text
+
+
+@pytest.mark.parametrize("case", ["no reference", "damaged", "no scenes", "scene not run", "manifest format"])
+def test_what_cannot_be_verified_is_a_usage_error(recorded, run, tmp_path, case):
+    ref = Path(shutil.copytree(recorded[1], tmp_path / "ref"))
+    args = ["verify", "--out", str(run), "--reference", str(ref)]
+    if case == "no reference":
+        args[-1] = str(tmp_path / "nowhere")
+    elif case == "damaged":
+        (ref / "ali1977-table1" / "legacy.csv.xz").write_bytes(b"not xz")
+    elif case == "no scenes":
+        args[2] = str(tmp_path)
+    elif case == "scene not run":
+        args.append("rahman1996-table5_7")
+    else:
+        _manifest(ref)
+        (run / "manifest.json").write_text(json.dumps({"format": 99}))
+    status, _, err = _cli(*args)
+    assert status == 2 and err.startswith("linkrepro: ") and "Traceback" not in err
+    assert {"no reference": "no reference", "damaged": "damaged", "no scenes": "no scene run",
+            "scene not run": "no run of rahman1996-table5_7", "manifest format": "format 99"}[case] in err
+
+
+def test_the_reference_carried_by_the_package_covers_every_scene():
+    """The run of record holds every scene `linkrepro reproduce` runs (`make test` then runs a
+    full reproduce and verifies it against this reference)."""
+    from linkrepro.harness.scenes import SCENES as ALL
+    assert verify_mod.reference_scenes(verify_mod.REFERENCE_DIR) == sorted(ALL)
