@@ -28,7 +28,8 @@ def hook_modules(hook: str) -> list:
     """Each thesis's ``<hook>`` module (``bench``: its part of ``linkrepro bench``, see
     ``harness/bench.py``; ``fuzz``: its entry points, ``harness/fuzz_calls.py``; ``commands``: its
     own commands, ``harness/command.py``; ``docs``: its generated blocks of the docs,
-    ``harness/docs.py``), where it has one."""
+    ``harness/docs.py``; ``differential``: its samplers and engine pairs,
+    ``harness/differential.py``), where it has one."""
     modules = []
     for thesis in THESES:
         name = f"{thesis.__name__}.{hook}"
@@ -38,6 +39,12 @@ def hook_modules(hook: str) -> list:
             if err.name != name:
                 raise
     return modules
+
+
+def differentials() -> dict:
+    """Every thesis's part of ``linkrepro differential`` (``DIFFERENTIAL`` of its ``differential``
+    module), by thesis name."""
+    return {module.__name__.split(".")[-2]: module.DIFFERENTIAL for module in hook_modules("differential")}
 
 
 def commands() -> list:

@@ -34,13 +34,13 @@ pi; speeds of either sign, zero, fractional (Case I truncates to INTEGER) up to 
 positive weights; section properties over several decades; angle steps that do and do not divide
 360.  Case III's source needs l2 > 8 (its five nodes are 2 in apart).
 
-``python tests/test_differential_ali1977.py [N] [--edges]`` runs the fixed random samples of the
-report (N inputs per program, default 500; ``draw_sample`` or ``draw_edges``) and prints the counts.
+The engine pairs are ``harness/scenes/ali1977/differential.py``'s, which ``linkrepro differential
+ali1977`` runs on numpy samples of this domain (``--domain sample`` or ``edges``; differential.md
+states them), e.g. ``--samples 500 --seed 20240611`` or ``--domain edges --seed 7``.
 """
 from __future__ import annotations
 
 import math
-import sys
 import warnings
 
 import numpy as np
@@ -50,58 +50,14 @@ from hypothesis import strategies as st
 
 from linkrepro.legacy import ali1977
 from linkrepro.errors import AssemblyError, LinkreproWarning, SingularPositionError
+from linkrepro.harness.scenes.ali1977.differential import (PI_22_7, PROGRAMS, legacy_call, listing_angles, port_call,
+                                                            real4)
 from linkrepro.port.ali1977 import case2, case3 as ked_case3
 from linkrepro.port.ali1977.fourbar import Lengths
 from linkrepro.port.ali1977.case1 import cognate_case1, source_case1
 from linkrepro.port.ali1977.cognate import cognate_mechanics
-from linkrepro.port.ali1977.quirks import PRINTED
 from linkrepro.port.ali1977.source import source_mechanics
 from linkrepro.port.ali1977.structure import Section
-
-PI_22_7 = ali1977.PI_PRINTED
-
-
-def real4(x: float) -> float:
-    return float(np.float32(x))
-
-
-def listing_angles(step: float) -> np.ndarray:
-    """The input angles the listings step through: P2=-DSTEP, then P2=P2+DSTEP in REAL*4."""
-    s = np.float32(step)
-    p = -s
-    out = []
-    for _ in range(ali1977.angle_grid(step)):
-        p = np.float32(p + s)
-        out.append(float(p))
-    return np.array(out)
-
-
-# --- the six programs, side by side ------------------------------------------------------
-
-def _port_call(name: str, g: dict, deg: np.ndarray) -> dict:
-    lengths, section = Lengths(*g["lengths"]), Section(g["area"], g["modulus"], g["inertia"])
-    args = dict(lengths=lengths, alp=g["alp"], rpm=g["rpm"], section=section)
-    if name == "case1_source":
-        return source_case1(deg, mass_lbf=g["weight"], quirks=PRINTED, **args)
-    if name == "case1_cognate":
-        return cognate_case1(deg, mass_lbf=g["weight"], quirks=PRINTED, **args)
-    if name == "case2_source":
-        return case2.case2_source(deg, density=g["weight"], quirks=case2.LISTING, **args)
-    if name == "case2_cognate":
-        return case2.case2_cognate(deg, density=g["weight"], quirks=case2.COGNATE_LISTING, **args)
-    if name == "case3_source":
-        return ked_case3.case3_source(deg, 5, density=g["weight"], quirks=ked_case3.LISTING, all_nodes=True, **args)
-    return ked_case3.case3_cognate(deg, 5, density=g["weight"], quirks=ked_case3.COGNATE_LISTING, **args)
-
-
-def _legacy_call(name: str, g: dict) -> dict:
-    weight = "mass_lbf" if name.startswith("case1") else "density"
-    return getattr(ali1977, name)(*g["lengths"], alp=g["alp"], rpm=g["rpm"], area=g["area"], modulus=g["modulus"],
-                                 inertia=g["inertia"], step_deg=g["step"], **{weight: g["weight"]})
-
-
-PROGRAMS = ("case1_source", "case1_cognate", "case2_source", "case2_cognate", "case3_source", "case3_cognate")
-
 
 def outcome(call):
     """(result, None, warned), or (None, (error type, input angle), warned) for the typed errors
@@ -122,8 +78,8 @@ def outcome(call):
 def assert_port_equals_legacy(name: str, g: dict):
     """The property on one set of inputs; returns the common outcome's label."""
     deg = listing_angles(g["step"])
-    leg, leg_err, leg_warned = outcome(lambda: _legacy_call(name, g))
-    port, port_err, port_warned = outcome(lambda: _port_call(name, g, deg))
+    leg, leg_err, leg_warned = outcome(lambda: legacy_call(name, g))
+    port, port_err, port_warned = outcome(lambda: port_call(name, g, deg))
     assert port_err == leg_err, f"{name} {g}: legacy {leg_err}, port {port_err}"
     assert port_warned == leg_warned, f"{name} {g}: legacy warned {leg_warned}, port {port_warned}"
     if leg is None:
@@ -292,7 +248,7 @@ FOUND = [
 @pytest.mark.parametrize("name,g,expected", FOUND)
 def test_inputs_where_the_port_differed(name, g, expected):
     assert_port_equals_legacy(name, g)
-    assert outcome(lambda: _legacy_call(name, g))[1] == (None if expected == "return" else expected)
+    assert outcome(lambda: legacy_call(name, g))[1] == (None if expected == "return" else expected)
 
 
 def test_case3_rotation_and_nodes_are_the_listings_off_the_example():
@@ -452,107 +408,3 @@ def test_port_refuses_wrong_containers(func, kw):
 def test_port_refuses_a_section_that_is_not_a_section(func):
     with pytest.raises(TypeError):
         PORT_FUNCTIONS[func](np.array([0.0]), section=(0.2, 1e7, 0.003))
-
-
-# --- the fixed sample of the report ------------------------------------------------------
-
-def draw_sample(rng: np.random.Generator, name: str) -> dict:
-    """One input of the report's fixed sample (numpy's generator, not hypothesis's): a quarter
-    free lengths, a quarter Grashof crank-rockers, half on an assembly limit moved by up to
-    1e-1 relative (log-uniform from 1e-14); alp anywhere in -2 pi .. 4 pi; 1 to 3000 rpm;
-    log-uniform weights and section values; steps from a list that does and does not divide 360."""
-    def log_u(lo, hi, size=None):
-        return np.exp(rng.uniform(np.log(lo), np.log(hi), size))
-
-    def rocker():
-        s = rng.uniform(0.5, 20.0)
-        p, q = s * log_u(1.01, 10.0, 2)
-        l3, l4, l5 = rng.permutation([p, q, rng.uniform(max(p, q), p + q - s)])
-        return s, l3, l4, l5
-    kind = rng.integers(4)
-    if kind == 0:
-        l1, l3, l4, l5 = log_u(0.5, 100.0, 4)
-    elif kind == 1:
-        l1, l3, l4, l5 = rocker()
-    else:
-        l1, l3, l4, _ = rocker()
-        target = (l3 + l4 - l1) if kind == 2 else l1 + abs(l3 - l4)
-        l5 = target * (1 + rng.choice([-1, 1]) * 10.0 ** rng.uniform(-14, -1))
-    l2 = 8.0 + log_u(0.01, 40.0) if name == "case3_source" else log_u(0.2, 60.0)
-    return {"lengths": tuple(float(v) for v in (l1, l2, l3, l4, l5)), "alp": float(rng.uniform(-2 * np.pi, 4 * np.pi)),
-            "rpm": float(rng.uniform(1, 3000) if rng.random() < 0.5 else rng.integers(1, 3000)),
-            "weight": real4(log_u(1e-3, 10.0)), "area": real4(log_u(0.01, 5.0)), "modulus": real4(log_u(1e6, 3e7)),
-            "inertia": real4(log_u(1e-5, 1.0)),
-            "step": float(rng.choice([1.0, 2.5, 5.0, 7.5, 10.0, 15.0, 20.0, 30.0, 0.7, 3.3]))}
-
-
-def _rejection_rocker(rng: np.random.Generator):
-    while True:
-        s = rng.uniform(0.5, 20.0)
-        l3, l4, l5 = s * np.exp(rng.uniform(0.02, 2.0, 3))
-        if s + max(l3, l4, l5) < l3 + l4 + l5 - max(l3, l4, l5):
-            return s, l3, l4, l5
-
-
-def draw_edges(rng: np.random.Generator, name: str) -> dict:
-    """One input of the report's edge sample: a fifth each folded at 0 deg in small integers
-    (l5 = l1 + |l3 - l4|, l1 = l5 + |l3 - l4|), on an assembly limit moved by -8..8 ulps, on
-    Grashof's change point, and degenerate cognates (l2 = l3 half the time); alp on the axes,
-    PI_22_7, within 1e-8 of 0 or pi, or anywhere; speeds, section values, weights and steps
-    from short lists of ordinary and extreme values."""
-    kind = rng.integers(5)
-    if kind == 0:
-        l1, l3, l4 = (float(x) for x in rng.integers(1, 40, 3))
-        l5 = l1 + abs(l3 - l4)
-        if l5 == l1:
-            l5 = l1 + 1.0
-    elif kind == 1:
-        l3, l4 = (float(x) for x in rng.integers(1, 40, 2))
-        l5 = float(rng.integers(1, 40))
-        l1 = l5 + abs(l3 - l4)
-    elif kind == 2:
-        l1, l3, l4, _ = _rejection_rocker(rng)
-        target = (l3 + l4 - l1) if rng.random() < 0.5 else l1 + abs(l3 - l4)
-        l5 = target * (1 + rng.integers(-8, 9) * 2.0 ** -52)
-    elif kind == 3:
-        l1, l3, l4, l5 = _rejection_rocker(rng)
-        vals = [l3, l4, l5]
-        i = int(np.argmax(vals))
-        vals[i] = sum(vals) - vals[i] - l1
-        l3, l4, l5 = vals
-    else:
-        l1, l3, l4, l5 = _rejection_rocker(rng)
-    l2 = float(rng.integers(1, 40)) if rng.random() < 0.5 else float(np.exp(rng.uniform(np.log(0.2), np.log(60))))
-    if kind == 4 and rng.random() < 0.5:
-        l2 = l3
-    if name == "case3_source":
-        l2 = 8.0 + float(rng.integers(1, 30)) * (1 if rng.random() < .5 else rng.random())
-    alp = float(rng.choice([0.0, np.pi, -np.pi, 2 * np.pi, np.pi / 2, 3 * np.pi / 2, PI_22_7,
-                            rng.uniform(-1e-8, 1e-8), np.pi + rng.uniform(-1e-8, 1e-8), rng.uniform(0, 2 * np.pi)]))
-    return {"lengths": (float(l1), l2, float(l3), float(l4), float(l5)), "alp": alp,
-            "rpm": float(rng.choice([0.0, 0.5, 1.0, 300.0, -300.0, 299.9, 1e6, rng.uniform(1, 3000)])),
-            "area": real4(rng.choice([0.1963495408, 1.0, 1e-6, 1e3])), "modulus": real4(rng.choice([1e7, 1.0, 3e7, 1e12])),
-            "inertia": real4(rng.choice([0.0030679615, 1.0, 1e-8, 1e3])),
-            "step": float(rng.choice([1.0, 20.0, 45.0, 90.0, 0.5, 7.0, 360.0, 400.0, 11.0])),
-            "weight": real4(rng.choice([0.0, 2.0, 1e-30, 1e30, 0.098]))}
-
-
-def _sample(count: int, edges: bool = False) -> None:
-    """Run the property on ``count`` inputs per program (the same inputs for every program but
-    l2 of Case III's source) and print the counts of each outcome."""
-    import collections
-    for name in PROGRAMS:
-        rng = np.random.default_rng(7 if edges else 20240611)
-        counts = collections.Counter()
-        for _ in range(count):
-            g = (draw_edges if edges else draw_sample)(rng, name)
-            try:
-                counts[assert_port_equals_legacy(name, g)] += 1
-            except AssertionError as exc:
-                counts["differ"] += 1
-                print("   ", str(exc)[:300])
-        print(name, dict(counts))
-
-
-if __name__ == "__main__":
-    _sample(int(sys.argv[1]) if len(sys.argv) > 1 else 500, edges="--edges" in sys.argv)

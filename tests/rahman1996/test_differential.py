@@ -19,15 +19,13 @@ from hypothesis import strategies as st
 
 from linkrepro.legacy import rahman1996
 from linkrepro.errors import LinkageError, QPError, SingularPositionError
-from linkrepro.harness.scenes.rahman1996.differential import one_ulp_up
+from linkrepro.harness.scenes.rahman1991.differential import geometry, sweep_1991
+from linkrepro.harness.scenes.rahman1996.differential import TABLE_RTOL, one_ulp_up
 from linkrepro.port.rahman1996.balance import CSSP_PRINTED, CRANK_DEG, _listing_motions, balance
-from linkrepro.port.rahman1996.data import Constants, CsspInputs
+from linkrepro.port.rahman1996.data import CsspInputs
 from linkrepro.port.rahman1996.listing import printed_inverse
 from linkrepro.port.rahman1991.data import GscInputs
-from linkrepro.port.rahman1991.position import BUILD_1996, NEWTON, positions
-
-#: tables: port with the listing's bugs against legacy, relative to each column's largest |value|
-TABLE_RTOL = 1e-12
+from linkrepro.port.rahman1991.position import NEWTON
 #: ten times the examples under HYPOTHESIS_PROFILE=thorough (make fuzz; max_examples 1000 there, 100 by default)
 MORE = max(1, settings.default.max_examples // 100)
 
@@ -164,10 +162,9 @@ def assert_1991_method_is_the_build(inputs: GscInputs) -> str:
     positions bit for bit; where the build fails in its first pass, the 1991 sweep stops at the
     same crank angle.  (The build can also fail later, in its rates, second pass or QP: then the
     1991 sweep either stops at the build's angle or runs through.)"""
-    g = dict(a1=inputs.a1, a2=inputs.a2, a4=inputs.a4, alpha4_deg=inputs.alpha4_deg, s1=inputs.s1, rpm=inputs.rpm)
+    g = geometry(inputs)
     leg, leg_err = outcome(lambda: rahman1996.cssp(**g))
-    pi = Constants.of(CsspInputs(**g), True).pi
-    run = positions(inputs, CRANK_DEG * (pi / 180.0), use_dfp=False, stop_at_failure=True, setup=BUILD_1996)
+    run = sweep_1991(g)
     solved = run.status == NEWTON
     if leg_err is None:
         assert solved.all()

@@ -1,4 +1,6 @@
-"""The port against the legacy build on a fixed random sample of Rahman (1996) geometries.
+"""The port against the legacy build on a fixed random sample of Rahman (1996) geometries:
+Rahman (1996)'s part of ``linkrepro differential`` (``DIFFERENTIAL``, ``harness/differential.py``)
+and the CSSP's fixed sample that docs/port-and-legacy.md shows.
 
 ``python -m linkrepro.harness.scenes.rahman1996.differential [--geometries 500] [--seed 1]`` prints, for the
 CSSP balancing program with the listing's bugs (legacy ``cssp`` against the port's
@@ -17,20 +19,29 @@ import collections
 
 import numpy as np
 
+from ....checks import LARGEST
 from ....legacy import rahman1996
 from ....errors import LinkageError, QPError
-from ....port.rahman1996.balance import CSSP_PRINTED, balance
+from ....port.rahman1996.balance import CSSP_PRINTED, _listing_motions, balance
 from ....port.rahman1996.data import CsspInputs
+from ...differential import Domain, Parameter, Program, Thesis
 
 #: a table move above this (relative to a column's largest value) is a jump, not round-off
 JUMP = 1e-3
+#: tables: port with the listing's bugs against legacy, relative to each column's largest |value|
+TABLE_RTOL = 1e-12
+
+
+def draw(rng: np.random.Generator, program: str = "cssp") -> dict:
+    """One geometry of the sampled domain (inches, degrees, rpm), drawn in the docstring's order."""
+    return dict(a1=rng.uniform(0.5, 4), a2=rng.uniform(3, 12), a4=rng.uniform(-3, 3),
+                alpha4_deg=rng.uniform(0, 360), s1=rng.uniform(-1, 1), rpm=3000.0)
 
 
 def sample(n: int, seed: int = 1) -> list[dict]:
     """n geometries of the sampled domain (inches, degrees, rpm)."""
     rng = np.random.default_rng(seed)
-    return [dict(a1=rng.uniform(0.5, 4), a2=rng.uniform(3, 12), a4=rng.uniform(-3, 3),
-                 alpha4_deg=rng.uniform(0, 360), s1=rng.uniform(-1, 1), rpm=3000.0) for _ in range(n)]
+    return [draw(rng) for _ in range(n)]
 
 
 def outcome(call) -> tuple:
@@ -86,6 +97,36 @@ def chaos(geometries: list[dict]) -> tuple[collections.Counter, np.ndarray]:
                 effect = "tables jump" if moves[-1] > JUMP or effect == "tables jump" else effect
         counts[(base_kind, effect)] += 1
     return counts, np.array(moves)
+
+
+def legacy_cssp(g: dict) -> dict:
+    """The build's tables and both passes' positions."""
+    leg = rahman1996.cssp(**g)
+    return {"table": leg["table"], "positions": leg["positions"]}
+
+
+def port_cssp(g: dict) -> dict:
+    """The port's (CSSP_PRINTED) tables, and both passes of the printed Newton's positions."""
+    inputs = CsspInputs(**g)
+    table = balance(inputs, CSSP_PRINTED)["table"]
+    return {"table": table, "positions": np.stack([motion.q for motion in _listing_motions(inputs, True, True)])}
+
+
+DIFFERENTIAL = Thesis(
+    title="Rahman (1996), the CSSP balancing program",
+    parameters=(Parameter("a1", "in", limits=(1 / LARGEST, LARGEST)), Parameter("a2", "in", limits=(1 / LARGEST, LARGEST)),
+                Parameter("a4", "in", limits=(-LARGEST, LARGEST)), Parameter("alpha4_deg", "deg", limits=(-LARGEST, LARGEST)),
+                Parameter("s1", "in", limits=(-LARGEST, LARGEST)), Parameter("rpm", "rpm", limits=(1 / LARGEST, LARGEST))),
+    domains=(Domain("sample", "the CSSP's fixed sample (the one docs/port-and-legacy.md shows at seed 1): a1 ~ U(0.5, 4), "
+                    "a2 ~ U(3, 12), a4 ~ U(-3, 3) in, alpha4 ~ U(0, 360) deg, s1 ~ U(-1, 1) in, 3000 rpm.", draw),),
+    programs=(Program("cssp", "CSSP (legacy cssp, port balance(..., CSSP_PRINTED))", legacy_cssp, port_cssp,
+                      dict(CsspInputs().__dict__), rtol={"table": TABLE_RTOL}),),
+    criterion=f"the same outcome (both return, or both raise the same error at the same crank angle) and, where both "
+              f"return, the printed Newton's positions of both passes equal bit for bit (the port runs it in the "
+              f"listing's order of operations) and Tables 5.2-5.7 within {TABLE_RTOL:g} of each column's largest "
+              f"|value| (the loads after the Newton are numpy, summed in another order than the listing's loops), as "
+              f"tests/rahman1996/test_differential.py asserts.",
+)
 
 
 def main(argv: list[str] | None = None) -> int:
