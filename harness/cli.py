@@ -70,7 +70,7 @@ def _parser() -> tuple[_Parser, dict[str, _Parser], dict]:
         "Rebuild, port and diff the FORTRAN of three mechanism-dynamics theses."),
         epilog="Exit status: 0 done, 1 a run failed, 2 a usage error, 130 interrupted.")
     parser.add_argument("--version", action="version", version=f"{PROG} {__version__}")
-    names = ["reproduce", "scenes", "explain", "bench", "verify", *theirs]
+    names = ["reproduce", "scenes", "explain", "bench", "verify", "differential", *theirs]
     sub = parser.add_subparsers(dest="command", required=True, metavar="{" + ",".join(names) + "}")
     rep = sub.add_parser("reproduce", help="run every engine of the scenes and write the report")
     rep.add_argument("scenes", nargs="*", help="scene names (default: all; see `linkrepro scenes`)")
@@ -108,7 +108,8 @@ def _parser() -> tuple[_Parser, dict[str, _Parser], dict]:
                         help="across toolchains, units of the last written digit a number may move (default 1)")
     verify.add_argument("--refresh", action="store_true",
                         help="print the comparison, then make --out's scenes the reference")
-    subparsers = {"reproduce": rep, "scenes": scenes, "explain": explain, "bench": bench, "verify": verify}
+    subparsers = {"reproduce": rep, "scenes": scenes, "explain": explain, "bench": bench, "verify": verify,
+                  "differential": _differential_parser(sub)}
     for command in theirs.values():
         own = sub.add_parser(command.name, help=command.help)
         own.add_argument("--out", default=command.default_out, type=_out_folder, help=command.out_help)
@@ -281,6 +282,71 @@ def _verify(args: argparse.Namespace) -> int:
     return 1 if verdict.failed else 0
 
 
+def _differential_parser(sub) -> _Parser:
+    from .scenes import THESES
+    own = sub.add_parser("differential", help="legacy against the port with the listing's bugs on a random sample "
+                         "of a thesis's geometries (or on given ones): where they differ (status 1 if anywhere)")
+    own.add_argument("theses", nargs="+", metavar="THESIS",
+                     help=f"one or more of {', '.join(t.__name__.rpartition('.')[2] for t in THESES)}")
+    own.add_argument("--samples", type=_repeat, default=None, help="geometries per program, >= 1 (default 100)")
+    own.add_argument("--seed", type=int, default=1, help="the sampler's seed (numpy default_rng; default 1)")
+    own.add_argument("--out", default=Path("out/differential"), type=_out_folder,
+                     help="output folder for differential.md and differential.csv (default: out/differential/, "
+                          "which reproduce's report shows)")
+    own.add_argument("--program", action="append", metavar="NAME", help="only this program (repeatable; one thesis)")
+    own.add_argument("--domain", metavar="NAME", help="the thesis's sampler (default: its first; differential.md names it)")
+    own.add_argument("--bounds", nargs="+", action="extend", default=[], metavar="NAME=LO:HI",
+                     help="draw NAME uniformly in LO..HI (log-uniformly for lengths and section values) instead "
+                          "of from the domain; NAME=VALUE holds it constant")
+    own.add_argument("--geometry", nargs="+", action="extend", default=[], metavar="NAME=VALUE",
+                     help="run one given geometry (one thesis); parameters not given are the published example's")
+    own.add_argument("--geometry-file", type=Path, metavar="FILE",
+                     help="run the geometries of a JSON or TOML file: a table NAME = VALUE, or a list of them")
+    return own
+
+
+def _differential(args: argparse.Namespace, parser: _Parser, argv: list[str]) -> int:
+    """``linkrepro differential``: 0 legacy and port agree on every sample, 1 they differ on one
+    (or a write failed), 2 a usage error."""
+    import time
+    from . import differential as machine
+    from .scenes import differentials
+    known, theses = differentials(), list(dict.fromkeys(args.theses))
+    unknown = [t for t in theses if t not in known]
+    if unknown:
+        parser.error(f"unknown thesis {', '.join(map(repr, unknown))}; known: {', '.join(known)}")
+    given = bool(args.geometry or args.geometry_file)
+    if given and (len(theses) > 1 or args.samples is not None or (args.geometry and args.geometry_file)):
+        parser.error("a given geometry (--geometry or --geometry-file, one of them) is for one thesis and takes no --samples")
+    if args.program and len(theses) > 1:
+        parser.error("--program names the programs of one thesis")
+    try:
+        plan = []
+        for key in theses:
+            geometries = None
+            if args.geometry:
+                geometries = [machine.parse_geometry(known[key], args.geometry)]
+            elif args.geometry_file:
+                geometries = machine.read_geometries(known[key], args.geometry_file)
+            plan.append(machine.plan_of(key, known[key], args.program, args.samples or 100, args.seed, args.domain,
+                                        args.bounds, geometries))
+    except machine.DifferentialUsageError as exc:
+        parser.error(str(exc))
+    done = []
+
+    def job() -> str:
+        start = time.perf_counter()
+        done.append(machine.run(machine.command_line(argv), plan, args.seed))
+        return machine.write(done[0], args.out, time.perf_counter() - start)
+    status = _write_outputs(args.out, machine.OUTPUTS, "linkrepro differential", job)
+    status = status or _report_of_parent(args.out, "differential")
+    if status == 0 and done[0].differ:
+        _error(f"legacy and the port differ on {done[0].differ} of {len(done[0].rows)} samples "
+               f"({args.out / 'differential.md'} lists them)")
+        return 1
+    return status
+
+
 def _report_of_parent(out: Path, folder: str) -> int:
     """After a command that wrote ``out``: where ``out`` is a report folder's ``folder`` (its
     default, e.g. out/bench), rebuild that folder's report (which shows it) and name it;
@@ -312,6 +378,8 @@ def _main(argv: list[str] | None) -> int:
         return _explain(args, commands["explain"])
     if args.command == "bench":
         return _bench(args)
+    if args.command == "differential":
+        return _differential(args, commands["differential"], sys.argv[1:] if argv is None else argv)
     if args.command == "verify":
         return _verify(args)
     if args.command in theirs:          # a thesis's own command (harness/command.py)

@@ -4,7 +4,8 @@ Every scene's run leaves ``<scene>/outcome.json`` in the folder (``scene.Outcome
 bench and each thesis's own commands leave their markdown in their folder (``bench/bench.md``,
 ``arithmetic/arithmetic.md``).  ``collect`` gathers what the folder holds, in the order of the
 theses (each thesis's scenes as it lists them, then its commands' outputs; the bench last), and
-names what is not there with the command that writes it.  ``write`` writes both reports from
+names what is not there with the command that writes it (``linkrepro differential`` writes
+``differential/differential.md``, shown before the bench).  ``write`` writes both reports from
 that, each whole or not at all (a temporary file renamed), so a run of one scene updates its
 section and keeps the others, and a report that cannot be built leaves the last one in place.
 """
@@ -72,6 +73,13 @@ def _bench(out_dir: Path) -> OutputSection:
                          f"linkrepro bench --out {folder}")
 
 
+def _differential(out_dir: Path) -> OutputSection:
+    folder = out_dir / "differential"
+    return OutputSection("differential", "Legacy against the port on sampled geometries (linkrepro differential)",
+                         folder, folder / "differential.md",
+                         f"linkrepro differential ali1977 rahman1996 rahman1991 --out {folder}")
+
+
 def _command(out_dir: Path, command) -> OutputSection:
     folder = out_dir / command.default_out.name
     return OutputSection(command.default_out.name, command.report_title, folder, folder / command.report_markdown,
@@ -98,7 +106,7 @@ def collect(out_dir: Path) -> Folder:
             section = _scene_section(out_dir, scene.name)
             (sections if section.outcome is not None or section.problem else absent).append(section)
         sections += [_command(out_dir, command) for command in commands_of(thesis) if command.report_markdown]
-    return Folder(out_dir, sections + [_bench(out_dir)], absent)
+    return Folder(out_dir, sections + [_differential(out_dir), _bench(out_dir)], absent)
 
 
 def _scene_lines(section: SceneSection) -> list[str]:
