@@ -5,7 +5,7 @@ VENV   := .venv
 BIN    := $(VENV)/bin
 SOURCES := pyproject.toml meson.build $(shell find legacy port harness package -type f -not -name '*.pyc' 2>/dev/null)
 
-.PHONY: reproduce test bench fuzz setup clean
+.PHONY: reproduce test packaging bench fuzz setup clean
 
 reproduce: $(VENV)/.installed
 	$(BIN)/linkrepro arithmetic --out out/arithmetic > /dev/null
@@ -16,6 +16,11 @@ test: $(VENV)/.installed
 	$(BIN)/python -m pytest -q -n auto tests
 	$(BIN)/linkrepro reproduce --out out/verify > /dev/null
 	$(BIN)/linkrepro verify --out out/verify
+
+# An sdist and a wheel of what git has committed (python -m build), each installed into a fresh
+# venv and run from outside the checkout (one build, serially: a few minutes; CI runs it after `make test`).
+packaging: $(VENV)/.installed
+	LINKREPRO_CHECK_PACKAGING=1 $(BIN)/python -m pytest -q tests/harness/test_packaging.py
 
 bench: $(VENV)/.installed
 	$(BIN)/linkrepro bench --out out/bench
