@@ -171,7 +171,7 @@ def _reproduce(args: argparse.Namespace, parser: _Parser) -> int:
     from .readings import CompilerError
     from .run import OutputFolderError, RunFailedError, reproduce
     try:
-        done = reproduce(args.scenes, args.out, measure_readings=not args.skip_readings)
+        done = reproduce(args.scenes, args.out, measure_readings=not args.skip_readings, command=args.line)
     except OutputFolderError as exc:          # found before the run: the --out argument is wrong
         _error(f"{exc} (--out)")
         return 2
@@ -222,10 +222,11 @@ def _explain(args: argparse.Namespace, parser: _Parser) -> int:
     return 0
 
 
-def _write_outputs(out: Path, outputs, writer: str, job, failures: tuple = ()) -> int:
+def _write_outputs(out: Path, outputs, writer: str, job, failures: tuple = (), line: str = "") -> int:
     """A command that writes ``outputs`` into ``out``: the folder checked writable before the
     work (status 2); a failure in ``failures`` or a failed write after it, status 1; the
-    markdown ``job()`` returns printed."""
+    markdown ``job()`` returns printed; ``line``: its command line, for out/manifest.json."""
+    from . import manifest
     from .run import OutputFolderError, check_output_folder
     try:
         check_output_folder(out, [])
@@ -236,7 +237,10 @@ def _write_outputs(out: Path, outputs, writer: str, job, failures: tuple = ()) -
         _error(f"{exc} (--out)")
         return 2
     try:
+        started = manifest.now()
         text = job()
+        if line:
+            manifest.write(out, line, outputs=outputs, started=started)
     except failures as exc:
         _error(str(exc))
         return 1
@@ -253,7 +257,8 @@ def _bench(args: argparse.Namespace) -> int:
     """``linkrepro bench``: --out checked writable before the run (status 2), a failed write
     after it status 1; the markdown printed."""
     from .bench_run import OUTPUTS, run_bench
-    status = _write_outputs(args.out, OUTPUTS, "the bench", lambda: run_bench(args.repeat, args.out, quick=args.quick))
+    status = _write_outputs(args.out, OUTPUTS, "the bench", lambda: run_bench(args.repeat, args.out, quick=args.quick),
+                            line=args.line)
     return status or _report_of_parent(args.out, "bench")
 
 
@@ -338,7 +343,7 @@ def _differential(args: argparse.Namespace, parser: _Parser, argv: list[str]) ->
         start = time.perf_counter()
         done.append(machine.run(machine.command_line(argv), plan, args.seed))
         return machine.write(done[0], args.out, time.perf_counter() - start)
-    status = _write_outputs(args.out, machine.OUTPUTS, "linkrepro differential", job)
+    status = _write_outputs(args.out, machine.OUTPUTS, "linkrepro differential", job, line=args.line)
     status = status or _report_of_parent(args.out, "differential")
     if status == 0 and done[0].differ:
         _error(f"legacy and the port differ on {done[0].differ} of {len(done[0].rows)} samples "
@@ -351,11 +356,13 @@ def _report_of_parent(out: Path, folder: str) -> int:
     """After a command that wrote ``out``: where ``out`` is a report folder's ``folder`` (its
     default, e.g. out/bench), rebuild that folder's report (which shows it) and name it;
     else say where the output is.  A failed write, status 1."""
+    from .manifest import include
     from .report_folder import write
     if out.name != folder:
         _out(f"written: {out} (a report shows it when it is a report folder's {folder}/)")
         return 0
     try:
+        include(out.parent, out)
         write(out.parent)
     except OSError as exc:
         _error(f"could not write {exc.filename}: {exc.strerror or exc}")
@@ -365,8 +372,10 @@ def _report_of_parent(out: Path, folder: str) -> int:
 
 
 def _main(argv: list[str] | None) -> int:
+    from .manifest import command_line
     parser, commands, theirs = _parser()
     args = parser.parse_args(argv)
+    args.line = command_line(sys.argv[1:] if argv is None else argv)       # for the run's manifest.json
     if args.command == "scenes":
         titles = _scene_titles()
         width = max(map(len, titles))
@@ -385,7 +394,7 @@ def _main(argv: list[str] | None) -> int:
     if args.command in theirs:          # a thesis's own command (harness/command.py)
         command = theirs[args.command]
         status = _write_outputs(args.out, command.outputs, f"linkrepro {command.name}", lambda: command.run(args),
-                                command.failures)
+                                command.failures, line=args.line)
         return status or (_report_of_parent(args.out, command.default_out.name) if command.report_markdown else 0)
     raise AssertionError(f"command {args.command!r} has no branch")
 

@@ -24,7 +24,7 @@ import pandas as pd
 from markdown_it import MarkdownIt
 from PIL import Image
 
-from . import figures as figures_mod, listing_lines, register as register_mod
+from . import figures as figures_mod, listing_lines, manifest, register as register_mod
 from .diff import CLASSES, COUNT_COLUMNS, EXPLAINED_BY, classify_cells, headline
 from .engines import ENGINES
 from .register import Deviation
@@ -197,6 +197,7 @@ def render(folder: "Folder") -> str:
         sections=sections, absent=folder.absent, out_dir=str(folder.out_dir), engines=ENGINES,
         statuses=CELL_STATUSES, columns=[(c, heading(c)) for c in COUNT_COLUMNS if c not in EXPLAINED_BY or c in kinds],
         kinds=kinds, total=headline(totals, by_kind=True),
+        made=(manifest.TITLE, markdown_html("\n".join(manifest.summary(folder.out_dir)))),
         entries=[_entry(register[i]) for i in sorted(used) if i in register],
         blocks={block: [_line(line) for line in lines] for lines, block in blocks.items()},
         cells_json=json.dumps(cells, separators=(",", ":")).replace("</", "<\\/"))

@@ -74,6 +74,8 @@ from .readings import COMPILER, FLAGS as READINGS_FLAGS
 
 FORMAT = 1
 FILE = "manifest.json"
+#: the heading of the report's section on it (``summary``)
+TITLE = "How this run was made"
 #: the package's root: the source tree (a checkout) or the installed package's folder
 ROOT = Path(__file__).resolve().parent.parent
 #: the inputs hashed: folders (every file in them) and files, relative to ROOT
@@ -350,12 +352,14 @@ def summary(out_dir: Path) -> list[str]:
              f"[{FILE}]({FILE}) has every field, with the SHA-256 of every input and output CSV.", "",
              f"- linkrepro {m['version']}, commit {commit_text}",
              f"- Python {m['python']}; {libraries}; meson-python {m['meson_python']}",
-             f"- Built with meson {m['build_meson']}, meson-python {m['build_meson_python']}, numpy {m['build_numpy']} "
-             f"and {m['build_gfortran']}: build type {m['build_type']} (meson's -O{m['build_optimization']} and "
-             f"FFLAGS {_value(m['build_fortran_args'])} before the flags)",
+             f"- Built with {m['build_gfortran']}, meson {m['build_meson']}, meson-python {m['build_meson_python']}, "
+             f"numpy {m['build_numpy']} (build type {m['build_type']}); gfortran on PATH: "
+             + ("the same" if m["gfortran"] == m["build_gfortran"] else m["gfortran"]),
              f"- Legacy flags: f2py extensions {_flags(m['flags_f2py_extension'])}; printed programs "
-             f"{_flags(m['flags_printed_programs'])}; rebuilds with a reading put back {_flags(m['flags_readings'])}, "
-             f"by {m['gfortran']}",
+             + ("the same" if m["flags_printed_programs"] == m["flags_f2py_extension"]
+                else _flags(m["flags_printed_programs"]))
+             + f" (after meson's -O{m['build_optimization']} and FFLAGS {_value(m['build_fortran_args'])}); "
+             f"rebuilds with a reading put back {_flags(m['flags_readings'])}",
              f"- {m['platform']}, {m['cpu_model']}, {m['cpu_count']} CPUs",
              f"- SHA-256 of {len(m['inputs'])} inputs ({', '.join(INPUTS)}; together {m['inputs_sha256'][:12]}) "
              f"and of {len(m['outputs'])} output CSVs", ""]

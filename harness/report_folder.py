@@ -8,6 +8,7 @@ names what is not there with the command that writes it (``linkrepro differentia
 ``differential/differential.md``, shown before the bench).  ``write`` writes both reports from
 that, each whole or not at all (a temporary file renamed), so a run of one scene updates its
 section and keeps the others, and a report that cannot be built leaves the last one in place.
+Both end with "How this run was made", from the folder's manifest.json (``manifest.summary``).
 """
 from __future__ import annotations
 
@@ -17,6 +18,7 @@ from pathlib import Path
 
 import pandas as pd
 
+from . import manifest
 from .diff import headline, total_counts
 from .report import COUNTS_WORDS
 from .scene import Outcome
@@ -142,6 +144,7 @@ def markdown(folder: Folder, latest: str = "") -> str:
         lines += ["## Not run into this folder", "",
                   f"`linkrepro reproduce NAME --out {folder.out_dir}` runs one: "
                   + ", ".join(s.name for s in folder.absent) + ".", ""]
+    lines += [f"## {manifest.TITLE}", "", *manifest.summary(folder.out_dir)]
     return "\n".join(lines) + "\n"
 
 

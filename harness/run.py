@@ -13,7 +13,7 @@ from queue import Empty
 
 import pandas as pd
 
-from . import listing_lines, progress, readings, report_folder
+from . import listing_lines, manifest, progress, readings, report_folder
 from .diff import total_counts
 from .scene import Outcome, RunOptions
 from .scenes import SCENES, TABLES, get
@@ -158,7 +158,8 @@ def _run_groups(groups: list[list[str]], out_dir: Path, options: RunOptions) -> 
     return results
 
 
-def reproduce(names: list[str] | None, out_dir: Path, measure_readings: bool = True) -> list[Outcome]:
+def reproduce(names: list[str] | None, out_dir: Path, measure_readings: bool = True,
+              command: str | None = None) -> list[Outcome]:
     """Run the named scenes (all by default; ``linkrepro scenes`` lists them) into DIR.  The scenes of a group run in one process, the groups side by
     side on the cores; a progress line on standard error when it is a terminal.
 
@@ -166,8 +167,13 @@ def reproduce(names: list[str] | None, out_dir: Path, measure_readings: bool = T
     if the OCR readings need gfortran and it is missing (``measure_readings=False`` skips
     them).  Each scene's outcome is kept in its folder, and DIR/report.md and DIR/report.html
     show every scene run into DIR, this run's and earlier ones', with the outputs of the other
-    commands found there (``harness/report_folder.py``).  After the run, if an engine could
-    not run: ``RunFailedError`` (everything else is written, the failures are in the reports)."""
+    commands found there (``harness/report_folder.py``), and DIR/manifest.json says how they were
+    made (``harness/manifest.py``; ``command``: the command line, by default the one that runs
+    the same).  After the run, if an engine could not run: ``RunFailedError`` (everything else is
+    written, the failures are in the reports)."""
+    started = manifest.now()
+    command = command or manifest.command_line(["reproduce", *(names or []), "--out", str(out_dir),
+                                                *([] if measure_readings else ["--skip-readings"])])
     names = list(dict.fromkeys(names or SCENES))
     out_dir = Path(out_dir)
     check_output_folder(out_dir, names)
@@ -179,6 +185,7 @@ def reproduce(names: list[str] | None, out_dir: Path, measure_readings: bool = T
         results = _run_groups(_groups(names), out_dir, RunOptions(measure_readings))
     done = [results[name] for name in names]
     failures = [f"{item.scene}: {failure}" for item in done for failure in item.failures]
+    manifest.write(out_dir, command, scenes=names, started=started)
     report_folder.write(out_dir, f"The latest reproduce run ({len(names)} of {len(SCENES)} scenes) took "
                                  f"{time.perf_counter() - start:.2f} s.")
     if failures:

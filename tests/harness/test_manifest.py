@@ -5,8 +5,10 @@ whose folder is gone is dropped, a command's folder enters its report folder's m
 write is whole or not at all.  That reproduce writes it and the report shows it: test_report_folder.py."""
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import importlib.metadata
+import io
 import json
 import os
 import re
@@ -16,6 +18,7 @@ import pytest
 
 from linkrepro import _build_record
 from linkrepro.harness import manifest
+from linkrepro.harness.cli import main
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -178,3 +181,18 @@ def test_differences_name_the_fields_and_inputs_that_differ(folder):
     b = {**a, "numpy": "1.0.0", "started": "later", "inputs": {**a["inputs"], "harness/deviations.toml": "0" * 64}}
     assert manifest.differences(a, b) == {"numpy": (a["numpy"], "1.0.0"),
                                           "inputs/harness/deviations.toml": (a["inputs"]["harness/deviations.toml"], "0" * 64)}
+
+
+def test_a_command_into_a_report_folder_s_subfolder_records_itself_in_both(tmp_path):
+    """`linkrepro differential ... --out DIR/differential` writes its manifest there and enters its
+    run into DIR's, which DIR's report shows."""
+    out = tmp_path / "out" / "differential"
+    with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(io.StringIO()):
+        status = main(["differential", "ali1977", "--samples", "2", "--out", str(out)])
+    assert status == 0
+    own, parent = manifest.load(out), manifest.load(out.parent)
+    line = f"linkrepro differential ali1977 --samples 2 --out {out}"
+    assert own["command"] == parent["command"] == line and own["sections"]["differential"]["folder"] == "."
+    assert parent["sections"]["differential"]["folder"] == "differential"
+    assert parent["outputs"]["differential/differential.csv"] == _sha(out / "differential.csv")
+    assert f"The latest run: `{line}`" in (out.parent / "report.md").read_text()

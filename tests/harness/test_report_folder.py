@@ -42,6 +42,25 @@ def test_a_second_run_keeps_the_first_scene_in_both_reports(two_runs):
     assert f"{(12 + 190) * 4} cells" in md.splitlines()[2]
 
 
+def test_the_manifest_keeps_the_first_scene_and_the_report_shows_it(two_runs):
+    """reproduce writes manifest.json: the second run at its top, the first run's scene kept with
+    its own start and command; both reports end with "How this run was made" from it."""
+    record = json.loads((two_runs / "manifest.json").read_text())
+    assert record["format"] == 1 and record["scenes"] == [SECOND]
+    assert record["command"] == f"linkrepro reproduce {SECOND} --out {two_runs} --skip-readings"
+    first, second = record["sections"][FIRST], record["sections"][SECOND]
+    assert first["command"] == f"linkrepro reproduce {FIRST} --out {two_runs} --skip-readings"
+    assert first["started"] <= second["started"] == record["started"] and first["differs"] == {} == second["differs"]
+    assert {f"{FIRST}/diff.csv", f"{SECOND}/diff.csv"} <= set(record["outputs"])
+    md, page = (two_runs / "report.md").read_text(), (two_runs / "report.html").read_text()
+    made = md.split("## How this run was made\n")[1]
+    assert f"`{record['command']}`" in made and record["flags_f2py_extension"][0] in made
+    assert f"Run earlier: {FIRST}, by `{first['command']}` started {first['started']} (the same set-up)" in made
+    section = page.split('<section id="how-made">')[1].split("</section>")[0]
+    assert "<h2>How this run was made</h2>" in section and 'href="manifest.json"' in section
+    assert f"<code>{record['command']}</code>" in section and '<a href="#how-made">' in page
+
+
 def test_the_scenes_not_run_are_named_with_the_command(two_runs):
     md = (two_runs / "report.md").read_text()
     others = [n for n in SCENES if n not in (FIRST, SECOND)]

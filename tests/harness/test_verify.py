@@ -58,7 +58,7 @@ def _manifest(folder: Path, **fields) -> None:
 def test_the_recorded_run_is_identical_to_its_reference(recorded):
     status, text, _ = _cli("verify", "--out", str(recorded[0]), "--reference", str(recorded[1]))
     assert status == 0 and text.rstrip().endswith("0 moved, 0 status changed: ok")
-    assert {p.name for p in recorded[1].iterdir()} == set(SCENES)
+    assert {p.name for p in recorded[1].iterdir()} == {*SCENES, "manifest.json"}     # the run's manifest copied
     stored = recorded[1] / "ali1977-table1" / "legacy.csv.xz"
     assert lzma.decompress(stored.read_bytes()) == (recorded[0] / "ali1977-table1" / "legacy.csv").read_bytes()
 
