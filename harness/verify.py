@@ -14,8 +14,8 @@ engine's, the printed digits):
 - *status changed*: a ``diff.csv`` cell whose status (match, registered, unexplained,
   not-produced) differs from the reference's.
 
-Policy: on the same toolchain (both have a manifest, and every field of the two is equal but
-the run's time, command, scenes, outputs and commit) every cell must be identical; across
+Policy: on the same toolchain (both have a manifest, and every field of their set-ups,
+``manifest.ENVIRONMENT``, is equal but the commit) every cell must be identical; across
 toolchains, or where a manifest is missing, a number may move by ``units`` (default 1) units of
 its last written digit.  A status never changes.
 Columns of measured times (a name with "seconds" or "time") are not compared.  The exit status
@@ -42,14 +42,14 @@ import numpy as np
 import pandas as pd
 
 from .compare_runs import is_timing
+from .manifest import ENVIRONMENT, FILE as MANIFEST, FORMAT
 
 REFERENCE_DIR = Path(__file__).resolve().parent.parent / "reference"
 SUFFIX = ".csv.xz"
-MANIFEST = "manifest.json"
-#: manifest fields that say when and what ran, not with what: they may differ on the same toolchain
-VOLATILE = ("started", "finished", "command", "scenes", "outputs", "commit", "dirty", "seconds")
+#: the set-up's fields that name the commit: a new commit on the same toolchain changes them
+COMMIT = ("commit", "dirty", "commit_from")
 #: the manifest formats this module reads
-FORMATS = (1,)
+FORMATS = (FORMAT,)
 STATUS_FILE, STATUS_COLUMN = "diff.csv", "status"
 EXAMPLES = 5
 
@@ -171,24 +171,12 @@ def load_manifest(folder: Path, what: str) -> dict | None:
     return data
 
 
-def _flat(data: dict, prefix: str = "") -> dict:
-    flat = {}
-    for key, value in data.items():
-        name = f"{prefix}{key}"
-        if isinstance(value, dict):
-            flat.update(_flat(value, f"{name}."))
-        else:
-            flat[name] = value
-    return flat
-
-
 def manifest_differences(ref: dict | None, run: dict | None) -> dict[str, tuple]:
-    """The manifests' fields that differ ({field: (reference, run)}), the volatile ones left out."""
+    """The fields of the two manifests' set-ups that differ ({field: (reference, run)}: the
+    ``manifest.ENVIRONMENT`` fields but the commit, which every new commit changes)."""
     if ref is None or run is None:        # the toolchains cannot be compared
         return {"manifest": ("present" if ref else "absent", "present" if run else "absent")}
-    a, b = _flat(ref), _flat(run)
-    return {k: (a.get(k), b.get(k)) for k in sorted(set(a) | set(b))
-            if k.split(".")[0] not in VOLATILE and a.get(k) != b.get(k)}
+    return {k: (ref.get(k), run.get(k)) for k in ENVIRONMENT if k not in COMMIT and ref.get(k) != run.get(k)}
 
 
 def verify(out_dir: Path, reference_dir: Path = REFERENCE_DIR, units: float = 1.0,
