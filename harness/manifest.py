@@ -15,7 +15,8 @@ with what a run ran, from ``version`` to ``inputs_sha256``):
 - ``version``: linkrepro's version (``linkrepro.__version__``)
 - ``commit``: the git commit of the checkout linkrepro ran from (``git rev-parse HEAD``, read when
   the run writes its manifest); installed from a wheel, the commit it was built from (recorded
-  when the build was configured; "unknown" from an sdist)
+  when the build was configured, from the checkout or from what ``meson dist`` wrote into the
+  sdist); else "unknown"
 - ``dirty``: whether tracked files differed from ``commit`` (``git status``, untracked files
   not counted); null when unknown
 - ``commit_from``: "git checkout", "build" (the build's record) or "unknown"
