@@ -294,7 +294,7 @@ def _differential_parser(sub) -> _Parser:
     own.add_argument("theses", nargs="+", metavar="THESIS",
                      help=f"one or more of {', '.join(t.__name__.rpartition('.')[2] for t in THESES)}")
     own.add_argument("--samples", type=_repeat, default=None, help="geometries per program, >= 1 (default 100)")
-    own.add_argument("--seed", type=int, default=1, help="the sampler's seed (numpy default_rng; default 1)")
+    own.add_argument("--seed", type=_seed, default=1, help="the sampler's seed, >= 0 (numpy default_rng; default 1)")
     own.add_argument("--out", default=Path("out/differential"), type=_out_folder,
                      help="output folder for differential.md and differential.csv (default: out/differential/, "
                           "which reproduce's report shows)")
@@ -310,7 +310,17 @@ def _differential_parser(sub) -> _Parser:
     return own
 
 
-def _differential(args: argparse.Namespace, parser: _Parser, argv: list[str]) -> int:
+def _seed(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        value = -1
+    if value < 0:
+        raise argparse.ArgumentTypeError(f"must be a whole number >= 0, not {text!r}")
+    return value
+
+
+def _differential(args: argparse.Namespace, parser: _Parser) -> int:
     """``linkrepro differential``: 0 legacy and port agree on every sample, 1 they differ on one
     (or a write failed), 2 a usage error."""
     import time
@@ -341,7 +351,7 @@ def _differential(args: argparse.Namespace, parser: _Parser, argv: list[str]) ->
 
     def job() -> str:
         start = time.perf_counter()
-        done.append(machine.run(machine.command_line(argv), plan, args.seed))
+        done.append(machine.run(args.line, plan, args.seed))
         return machine.write(done[0], args.out, time.perf_counter() - start)
     status = _write_outputs(args.out, machine.OUTPUTS, "linkrepro differential", job, line=args.line)
     status = status or _report_of_parent(args.out, "differential")
@@ -388,7 +398,7 @@ def _main(argv: list[str] | None) -> int:
     if args.command == "bench":
         return _bench(args)
     if args.command == "differential":
-        return _differential(args, commands["differential"], sys.argv[1:] if argv is None else argv)
+        return _differential(args, commands["differential"])
     if args.command == "verify":
         return _verify(args)
     if args.command in theirs:          # a thesis's own command (harness/command.py)

@@ -23,7 +23,6 @@ from __future__ import annotations
 
 import json
 import math
-import shlex
 import time
 import tomllib
 import warnings
@@ -371,7 +370,7 @@ def _span(values: pd.Series) -> str:
 
 
 def _rerun(key: str, program: str, row: dict, names: list[str]) -> str:
-    given = " ".join(f"{name}={row[name]!r}" for name in names)
+    given = " ".join(f"{name}={float(row[name])!r}" for name in names)
     return f"linkrepro differential {key} --program {program} --geometry {given}"
 
 
@@ -461,8 +460,3 @@ def plan_of(key: str, thesis: Thesis, programs: list[str] | None, samples: int, 
         raise DifferentialUsageError(f"--samples must be a whole number >= 1, not {samples}")
     d, limits = thesis.domain(domain), parse_bounds(thesis, bounds)
     return key, thesis, chosen, d, limits, {p.name: draw(thesis, d, p.name, samples, seed, limits) for p in chosen}
-
-
-def command_line(args: list[str]) -> str:
-    """The command as typed (``args``: what follows ``linkrepro``)."""
-    return "linkrepro " + " ".join(shlex.quote(a) for a in args)

@@ -123,6 +123,7 @@ def test_another_outcome_is_a_difference(monkeypatch, tmp_path, capsys):
     (["nobody1999"], "unknown thesis 'nobody1999'"),
     (["ali1977", "--samples", "0"], "--samples"),
     (["ali1977", "--samples", "x"], "--samples"),
+    (["ali1977", "--seed", "-1"], "--seed"),
     (["ali1977", "--bounds", "l1=5:1"], "lower bound"),
     (["ali1977", "--bounds", "l1=-1:5"], "log-uniformly"),
     (["ali1977", "--bounds", "l9=1:5"], "unknown parameter 'l9'"),
