@@ -42,12 +42,12 @@ def test_hashes_are_those_of_the_files(folder):
     data = json.loads(manifest.write(folder, "linkrepro reproduce --out out", scenes=["scene-a", "scene-b"]).read_text())
     csvs = {p.relative_to(folder).as_posix(): _sha(p) for p in folder.rglob("*.csv")}
     assert data["outputs"] == csvs and len(csvs) == 3
-    inputs = {}
+    inputs, package = {}, manifest.ROOT       # the package's root: the checkout, or the installed package
     for top in ("legacy/printed", "legacy/src", "harness/published"):
-        for name in os.listdir(ROOT / top):
-            if (ROOT / top / name).is_file() and not name.startswith("."):
-                inputs[f"{top}/{name}"] = _sha(ROOT / top / name)
-    inputs["harness/deviations.toml"] = _sha(ROOT / "harness" / "deviations.toml")
+        for name in os.listdir(package / top):
+            if (package / top / name).is_file() and not name.startswith("."):
+                inputs[f"{top}/{name}"] = _sha(package / top / name)
+    inputs["harness/deviations.toml"] = _sha(package / "harness" / "deviations.toml")
     assert data["inputs"] == inputs
     assert "legacy/printed/ali1977_case1_source.f" in inputs and "legacy/src/imsl_qprog.f" in inputs
     lines = "".join(f"{h}  {p}\n" for p, h in sorted(inputs.items()))
