@@ -104,8 +104,9 @@ def _parser() -> tuple[_Parser, dict[str, _Parser], dict]:
     verify.add_argument("--out", default=Path("out"), type=_out_folder, help="the run's output folder (default: out/)")
     verify.add_argument("--reference", type=Path, default=None,
                         help="the run of record (default: the reference/ the package carries)")
-    verify.add_argument("--units", type=float, default=1.0,
-                        help="across toolchains, units of the last written digit a number may move (default 1)")
+    verify.add_argument("--units", type=float, default=4.0,
+                        help="across toolchains, units in the last place a number may move: ulps where it is "
+                             "written in full, else units of its last written digit (default 4)")
     verify.add_argument("--refresh", action="store_true",
                         help="print the comparison, then make --out's scenes the reference")
     subparsers = {"reproduce": rep, "scenes": scenes, "explain": explain, "bench": bench, "verify": verify,

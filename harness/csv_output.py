@@ -13,6 +13,11 @@ import numpy as np
 import pandas as pd
 
 
+#: ``float_format`` for values written in full: each float's shortest repr that reads back to the
+#: same double (an engine's outputs, so that ``linkrepro verify`` sees every bit)
+FULL_PRECISION = None
+
+
 def _cells(column: pd.Series, float_format: str | None) -> list:
     values = column.to_numpy()
     if column.dtype.kind == "f":

@@ -11,7 +11,7 @@ from typing import Any, Callable
 import pandas as pd
 
 from . import readings, register as register_mod
-from .csv_output import write_csv
+from .csv_output import FULL_PRECISION, write_csv
 from .diff import count_cells, diff_scene
 from .engines import ENGINES, PrintedProgramError
 from .listing_lines import Statement
@@ -108,8 +108,8 @@ class TableScene:
         done = self.compute()
         published, diff, timings, failures = done.published, done.diff, done.timings, done.failures
         for engine, frame in done.results.items():
-            write_csv(frame, target / f"{engine}.csv", "%.9g")
-        write_csv(diff, target / "diff.csv", "%.9g")
+            write_csv(frame, target / f"{engine}.csv", FULL_PRECISION)
+        write_csv(diff, target / "diff.csv", FULL_PRECISION)
         plots = plot_scene(self, published, done.results, target)
         extra = "\n".join(f"**{f}**" for f in failures)
         for section in self.sections:

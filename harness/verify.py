@@ -4,20 +4,21 @@ The run of record is ``reference/`` (in the repository, installed with the packa
 of every scene of a full ``linkrepro reproduce``, xz-compressed (``<scene>/<file>.csv.xz``),
 with the run's ``manifest.json`` where it wrote one.  ``verify`` reads the scenes found in an
 output folder (those with an ``outcome.json``) and compares each of their CSVs with the
-reference's, cell by cell, as written (the scene CSVs carry 9 significant digits; a printed
-engine's, the printed digits):
+reference's, cell by cell, as written (every engine's outputs and ``diff.csv`` in full: each
+double's shortest repr; a printed engine's, at its printed digits; summaries rounded):
 
 - *identical*: the same text;
-- *within*: a number that differs by at most ``units`` units of the last digit the reference
-  writes in that column (its most significant digits over the column);
+- *within*: a number that differs by at most ``units`` units in the last place: ulps of a
+  double where the column is written in full (16 or more significant digits), else units of
+  the last digit the reference writes in that column (its most digits over the column);
 - *moved*: any other difference (a number beyond that, a text, a NaN where there was a number);
 - *status changed*: a ``diff.csv`` cell whose status (match, registered, unexplained,
   not-produced) differs from the reference's.
 
 Policy: on the same toolchain (both have a manifest, and every field of their set-ups,
 ``manifest.ENVIRONMENT``, is equal but the commit) every cell must be identical; across
-toolchains, or where a manifest is missing, a number may move by ``units`` (default 1) units of
-its last written digit.  A status never changes.
+toolchains, or where a manifest is missing, a number may move by ``units`` (default 4) units in
+the last place.  A status never changes.
 Columns of measured times (a name with "seconds" or "time") are not compared.  The exit status
 of the command: 0 when every cell keeps the policy, 1 when one does not, 2 for a usage error
 (no reference, a damaged one, a manifest of another format, an output folder without the
@@ -52,6 +53,11 @@ COMMIT = ("commit", "dirty", "commit_from")
 FORMATS = (FORMAT,)
 STATUS_FILE, STATUS_COLUMN = "diff.csv", "status"
 EXAMPLES = 5
+#: a column whose numbers carry this many significant digits is written in full (each float's
+#: shortest repr): a difference in it is counted in units in the last place of a double (ulps)
+FULL_DIGITS = 16
+#: the default of ``units`` across toolchains
+UNITS = 4.0
 
 
 class VerifyError(ValueError):
@@ -143,10 +149,11 @@ def compare_frames(name: str, ref: pd.DataFrame, run: pd.DataFrame, allowed: flo
             digits = max(_digits(t) for t in a if t != "") if (a != "").any() else 1
             scale = np.fmax(np.abs(x), np.abs(y))
             with np.errstate(divide="ignore", invalid="ignore"):
-                unit = 10.0 ** (np.floor(np.log10(scale)) - digits + 1)
+                unit = (np.spacing(scale) if digits >= FULL_DIGITS        # written in full: ulps
+                        else 10.0 ** (np.floor(np.log10(scale)) - digits + 1))
                 units = np.where(np.isfinite(x) & np.isfinite(y), np.abs(x - y) / unit, np.inf)
         for i in np.flatnonzero(~same):
-            if units[i] <= allowed:
+            if units[i] <= allowed * (1 + 1e-6):      # (a difference of decimals, computed in binary)
                 result.within += 1
             else:
                 result.moved += 1
@@ -179,7 +186,7 @@ def manifest_differences(ref: dict | None, run: dict | None) -> dict[str, tuple]
     return {k: (ref.get(k), run.get(k)) for k in ENVIRONMENT if k not in COMMIT and ref.get(k) != run.get(k)}
 
 
-def verify(out_dir: Path, reference_dir: Path = REFERENCE_DIR, units: float = 1.0,
+def verify(out_dir: Path, reference_dir: Path = REFERENCE_DIR, units: float = UNITS,
            scenes: list[str] | None = None) -> Verdict:
     """Compare the scenes of ``out_dir`` (``scenes``: those only) with ``reference_dir``."""
     out_dir, reference_dir = Path(out_dir), Path(reference_dir)
@@ -227,8 +234,8 @@ def describe(verdict: Verdict) -> str:
     lines = [f"linkrepro verify: {verdict.out_dir} against the reference {verdict.reference_dir}",
              "policy: " + ("the same toolchain (the manifests agree): every cell identical as written"
                            if verdict.same_toolchain else
-                           f"toolchains that differ or cannot be compared: a number may move by {verdict.units:g} unit(s) "
-                           "of its last written digit")
+                           f"toolchains that differ or cannot be compared: a number may move by {verdict.units:g} "
+                           "unit(s) in the last place (ulps where written in full, else of the last written digit)")
              + "; a diff.csv status never changes; measured times are not compared"]
     for key, (ref, run) in verdict.manifest_differences.items():
         lines.append(f"  {key}: reference {ref}, run {run}" if key == "manifest" else

@@ -8,6 +8,8 @@ import lzma
 import shutil
 from pathlib import Path
 
+import numpy as np
+import pandas as pd
 import pytest
 
 from linkrepro.harness import verify as verify_mod
@@ -63,10 +65,10 @@ def test_the_recorded_run_is_identical_to_its_reference(recorded):
     assert lzma.decompress(stored.read_bytes()) == (recorded[0] / "ali1977-table1" / "legacy.csv").read_bytes()
 
 
-def test_a_number_one_unit_off_moves_on_the_same_toolchain_and_not_across(recorded, run):
+def test_a_number_one_ulp_off_moves_on_the_same_toolchain_and_not_across(recorded, run):
     ref = Path(shutil.copytree(recorded[1], run.parent / "ref"))
-    old = _edit(run / "ali1977-table1" / "legacy.csv", 4, "src_dx",
-                lambda t: t[:-1] + str((int(t[-1]) + 1) % 10) if t[-1] != "9" else t[:-1] + "8")
+    old = _edit(run / "ali1977-table1" / "legacy.csv", 4, "src_dx", lambda t: repr(float(np.nextafter(float(t), np.inf))))
+    assert len(old.lstrip("-").replace(".", "")) >= 15           # engines' outputs are written in full
     _manifest(ref, gfortran="GNU Fortran 12", numpy="2.0")
     _manifest(run, gfortran="GNU Fortran 12", numpy="2.0", started="later")       # the same toolchain
     status, text, _ = _cli("verify", "--out", str(run), "--reference", str(ref))
@@ -74,8 +76,16 @@ def test_a_number_one_unit_off_moves_on_the_same_toolchain_and_not_across(record
     _manifest(run, gfortran="GNU Fortran 13", numpy="2.0")                          # another one
     status, text, _ = _cli("verify", "--out", str(run), "--reference", str(ref))
     assert status == 0 and "manifest field gfortran: reference 'GNU Fortran 12', run 'GNU Fortran 13'" in text
-    assert "1 within the policy" in text
+    assert "1 within the policy" in text                                        # 1 ulp <= 4
     assert _cli("verify", "--out", str(run), "--reference", str(ref), "--units", "0.5")[0] == 1
+
+
+def test_a_rounded_column_counts_units_of_its_last_written_digit():
+    ref = pd.DataFrame({"x": ["1.23456789", "2.5", "-0.000123456789"]})
+    run = pd.DataFrame({"x": ["1.23456791", "2.50000001", "-0.000123456786"]})
+    result = verify_mod.compare_frames("s/summary.csv", ref, run, 2.0)
+    assert (result.identical, result.within, result.moved) == (0, 2, 1)           # 2, 1 and 3 units
+    assert result.examples[0][1:4] == ("x", "-0.000123456789", "-0.000123456786")
 
 
 def test_a_status_that_changes_fails_under_any_policy(recorded, run):

@@ -21,6 +21,7 @@ from ....port.ali1977.case2 import case2_cognate, case2_source
 from ....port.ali1977.case3 import COGNATE_LISTING as CASE3_COG
 from ....port.ali1977.case3 import LISTING as CASE3
 from ....port.ali1977.case3 import case3_cognate, case3_source
+from ...csv_output import FULL_PRECISION, write_csv
 from ...figures import ENGINE_STYLE, save
 from ...report import draw_all, panel_grid, top_legend, wrap_title
 from ...scene import ReportScene
@@ -70,7 +71,7 @@ def run(out_dir: Path) -> dict:
                     for deg, value in zip(DEG, out[q]):
                         rows.append((case, mech, rpm, engine, q, deg, float(value)))
     curves = pd.DataFrame(rows, columns=["case", "mechanism", "rpm", "engine", "quantity", "input_deg", "value"])
-    curves.to_csv(target / "curves.csv", index=False, float_format="%.9g")
+    write_csv(curves, target / "curves.csv", FULL_PRECISION)
     plots = _plot(curves, target)
     claims = _claims(curves)
     claims.to_csv(target / "claims.csv", index=False, float_format="%.9g")

@@ -31,7 +31,7 @@ from ....port.ali1977.conditioning import (CONDITION_FACTOR, DOUBLE_UNIT, REAL4_
                                            expected_error, spread)
 from ....port.ali1977.fourbar import Lengths
 from ....port.ali1977.quirks import CORRECTED
-from ...csv_output import write_csv
+from ...csv_output import FULL_PRECISION, write_csv
 from ...scene import ReportScene
 from . import exact
 from .tables import GROUP, START
@@ -179,7 +179,7 @@ def run(out_dir: Path, seed: int = 2026, count: int = 60) -> pd.DataFrame:
     target.mkdir(parents=True, exist_ok=True)
     data = measure(sample(seed, count))
     table = summary(data)
-    write_csv(data, target / "conditioning.csv", "%.9g")
+    write_csv(data, target / "conditioning.csv", FULL_PRECISION)
     write_csv(table, target / "summary.csv", "%.6g")
     plot(data, target / "conditioning.png")
     lines = [f"# {TITLE}", "", __doc__.split("\n\n", 1)[1].strip(), "",

@@ -25,7 +25,7 @@ from ....port.rahman1991.data import GscInputs
 from ....port.rahman1991.quirks import GSC_CORRECTED, GSC_PRINTED
 from . import near_singular, planar_reference, figures as rahman1991_figures
 from ... import progress
-from ...csv_output import write_csv
+from ...csv_output import FULL_PRECISION, write_csv
 from ...published_tables import PUBLISHED_DIR
 from ...scene import ReportScene
 
@@ -251,7 +251,7 @@ def run(out_dir: Path) -> dict:
         frames[engine] = grid(engine)
         timings[engine] = time.perf_counter() - start
         name = "port.csv" if engine == "port_printed" else f"{engine}.csv"
-        write_csv(frames[engine][gsc.COLUMNS], target / name, "%.9g")
+        write_csv(frames[engine][gsc.COLUMNS], target / name, FULL_PRECISION)
     diagnostics = pd.concat([f[["a4", "alpha4_deg", "s1", "crank_deg", "status", "closure"]].assign(engine=e)
                              for e, f in frames.items()])
     write_csv(diagnostics, target / "diagnostics.csv", "%.6g")
