@@ -236,7 +236,9 @@ def describe(verdict: Verdict) -> str:
                            if verdict.same_toolchain else
                            f"toolchains that differ or cannot be compared: a number may move by {verdict.units:g} "
                            "unit(s) in the last place (ulps where written in full, else of the last written digit)")
-             + "; a diff.csv status never changes; measured times are not compared"]
+             + "; a diff.csv status never changes; measured times are not compared",
+             "  per engine: legacy, port_printed, port_corrected and diff.csv are written in full (ulps); "
+             "printed at the digits its program prints; summaries at the digits they are written with"]
     for key, (ref, run) in verdict.manifest_differences.items():
         lines.append(f"  {key}: reference {ref}, run {run}" if key == "manifest" else
                      f"  manifest field {key}: reference {ref!r}, run {run!r}")
