@@ -196,7 +196,7 @@ def draw_all(draw, jobs: list[tuple]) -> list:
         return [draw(*job) for job in jobs]
     pool = ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("fork"))
     try:
-        return list(pool.map(draw, *zip(*jobs)))
+        return list(pool.map(draw, *zip(*jobs, strict=True)))     # jobs of unequal length: an error
     finally:
         pool.shutdown(cancel_futures=True)
 

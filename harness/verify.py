@@ -44,6 +44,7 @@ import pandas as pd
 
 from .compare_runs import is_timing
 from .manifest import ENVIRONMENT, FILE as MANIFEST, FORMAT
+from .trail import printed_digits
 
 REFERENCE_DIR = Path(__file__).resolve().parent.parent / "reference"
 SUFFIX = ".csv.xz"
@@ -88,11 +89,6 @@ class Verdict:
     unchecked: list[str]
 
     @property
-    def allowed_units(self) -> float:
-        """Units of the last written digit a number may move by under the policy."""
-        return 0.0 if self.same_toolchain else self.units
-
-    @property
     def failed(self) -> list[FileResult]:
         return [f for f in self.files if f.problem or f.status_changed or f.moved]
 
@@ -109,12 +105,6 @@ def reference_scenes(reference_dir: Path) -> list[str]:
 def read_csv_text(data: bytes) -> pd.DataFrame:
     """A CSV as text cells (missing = "")."""
     return pd.read_csv(io.BytesIO(data), dtype=str, keep_default_na=False)
-
-
-def _digits(text: str) -> int:
-    """Significant digits a number is written with ("1.25e-05": 3, "0.0040": 2)."""
-    mantissa = text.strip().lstrip("+-").upper().split("E")[0].replace(".", "").lstrip("0")
-    return len(mantissa.rstrip("0")) or 1
 
 
 def _numbers(column: pd.Series) -> np.ndarray | None:
@@ -146,7 +136,7 @@ def compare_frames(name: str, ref: pd.DataFrame, run: pd.DataFrame, allowed: flo
         x, y = _numbers(ref[column]), _numbers(run[column])
         units = np.full(len(a), np.inf)
         if x is not None and y is not None:
-            digits = max(_digits(t) for t in a if t != "") if (a != "").any() else 1
+            digits = max(printed_digits(t) for t in a if t != "") if (a != "").any() else 1
             scale = np.fmax(np.abs(x), np.abs(y))
             with np.errstate(divide="ignore", invalid="ignore"):
                 unit = (np.spacing(scale) if digits >= FULL_DIGITS        # written in full: ulps

@@ -5,6 +5,7 @@ import contextlib
 import io
 import json
 import lzma
+import re
 import shutil
 from pathlib import Path
 
@@ -128,3 +129,13 @@ def test_the_reference_carried_by_the_package_covers_every_scene():
     full reproduce and verifies it against this reference)."""
     from linkrepro.harness.scenes import SCENES as ALL
     assert verify_mod.reference_scenes(verify_mod.REFERENCE_DIR) == sorted(ALL)
+
+
+def test_the_size_the_docs_quote_is_the_references():
+    """docs/developing.md quotes the reference's size: it is the size of reference/ (MB, 0.1)."""
+    docs = Path(__file__).resolve().parents[2] / "docs" / "developing.md"
+    if not docs.exists():
+        pytest.skip("the docs are not at hand")
+    quoted = float(re.search(r"xz-compressed \(([0-9.]+) MB\)", docs.read_text()).group(1))
+    size = sum(p.stat().st_size for p in verify_mod.REFERENCE_DIR.rglob("*") if p.is_file())
+    assert quoted == round(size / 1e6, 1)
