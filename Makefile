@@ -48,7 +48,7 @@ $(VENV)/.installed: $(SOURCES)
 	  echo "chromium could not be installed: the browser test will be skipped"; }
 	@test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install -q --upgrade pip
-	$(BIN)/python -m pip install -q ".[test]"
+	$(BIN)/python -m pip install -q ".[test,multibody]"
 	@touch $@
 
 clean:

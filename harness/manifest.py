@@ -21,7 +21,8 @@ with what a run ran, from ``version`` to ``inputs_sha256``):
   not counted); null when unknown
 - ``commit_from``: "git checkout", "build" (the build's record) or "unknown"
 - ``python``: its version and implementation, e.g. "3.11.7 (CPython)"
-- ``numpy``, ``scipy``, ``numba``, ``pandas``, ``matplotlib``: their versions (importlib.metadata)
+- ``numpy``, ``scipy``, ``numba``, ``pandas``, ``matplotlib``, ``exudyn``: their versions
+  (importlib.metadata; "not installed" for Exudyn where the optional extra is not)
 - ``meson_python``: meson-python's version where it is installed at run time, else "not installed"
 - ``build_meson``, ``build_meson_python``, ``build_numpy``: the versions the build used (numpy's
   f2py wrote the extensions' C)
@@ -82,7 +83,7 @@ ROOT = Path(__file__).resolve().parent.parent
 #: the inputs hashed: folders (every file in them) and files, relative to ROOT
 INPUTS = ("legacy/printed", "legacy/src", "harness/published", "harness/deviations.toml")
 #: the libraries whose versions are recorded, by their distribution's name
-LIBRARIES = ("numpy", "scipy", "numba", "pandas", "matplotlib")
+LIBRARIES = ("numpy", "scipy", "numba", "pandas", "matplotlib", "exudyn")
 NOT_INSTALLED = "not installed"
 #: the fields that say with what a run ran (a section's ``differs`` holds those of its run's)
 ENVIRONMENT = ("version", "commit", "dirty", "commit_from", "python", *LIBRARIES, "meson_python",

@@ -117,7 +117,8 @@ def _scene_lines(section: SceneSection) -> list[str]:
     o = section.outcome
     lines = [f"## [{o.scene}]({o.scene}/report.md)", "", o.title, "", *o.overview, "",
              f"Run {o.finished}, wall time {o.seconds:.2f} s.", ""]
-    return lines + [f"**{failure}**\n" for failure in o.failures]
+    skipped = [f"**Skipped: {o.skipped}**", ""] if o.skipped else []
+    return lines + skipped + [f"**{failure}**\n" for failure in o.failures]
 
 
 def _output_lines(section: OutputSection, out_dir: Path) -> list[str]:

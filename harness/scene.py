@@ -39,11 +39,16 @@ class RunOptions:
     measure_readings: bool = True        # rebuild the listings with the scan's readings (gfortran)
 
 
+class SceneSkipped(Exception):
+    """A scene that cannot run on this machine (an optional dependency missing); its message
+    says what is missing and how to get it.  Not a failure: the run goes on and reports it."""
+
+
 @dataclass
 class Outcome:
     """What a scene's run gives the run's report: markdown lines under its heading, its wall
     time (s), the cells per engine (table scenes: ``diff.count_cells``), what could not run,
-    when it finished (UTC, ISO 8601).  Kept in the scene's folder as ``outcome.json``
+    when it finished (UTC, ISO 8601), why it did not run where it was skipped (``SceneSkipped``).  Kept in the scene's folder as ``outcome.json``
     (``save``, ``load``), so that the folder's report shows every scene run into it."""
     scene: str
     title: str
@@ -52,14 +57,16 @@ class Outcome:
     counts: pd.DataFrame | None = None
     failures: list[str] = field(default_factory=list)
     finished: str = field(default_factory=lambda: datetime.now(timezone.utc).isoformat(timespec="seconds"))
+    skipped: str = ""
 
     FILE = "outcome.json"
 
     def save(self, out_dir: Path) -> Path:
         """Write ``out_dir/<scene>/outcome.json`` (whole or not at all: a temporary file renamed)."""
         path = Path(out_dir) / self.scene / self.FILE
+        path.parent.mkdir(parents=True, exist_ok=True)      # a skipped scene wrote nothing else
         record = {"scene": self.scene, "title": self.title, "overview": self.overview, "seconds": self.seconds,
-                  "failures": self.failures, "finished": self.finished,
+                  "failures": self.failures, "finished": self.finished, "skipped": self.skipped,
                   "counts": None if self.counts is None else json.loads(self.counts.to_json(orient="split"))}
         temporary = path.with_name(f".{self.FILE}.{os.getpid()}")
         temporary.write_text(json.dumps(record, indent=1))
@@ -77,7 +84,7 @@ class Outcome:
             return cls(record["scene"], record["title"], list(record["overview"]), float(record["seconds"]),
                        None if counts is None else pd.DataFrame(counts["data"], index=counts["index"],
                                                                 columns=counts["columns"]),
-                       list(record["failures"]), str(record["finished"]))
+                       list(record["failures"]), str(record["finished"]), str(record.get("skipped", "")))
         except FileNotFoundError:
             raise
         except (OSError, ValueError, KeyError, TypeError) as exc:
@@ -96,7 +103,9 @@ class Scene(Protocol):
 @dataclass(frozen=True)
 class ReportScene:
     """A scene without a published table: ``produce(out_dir)`` writes ``out_dir/<name>/`` and
-    returns what it measured; ``overview(result)`` gives the run report's lines about it."""
+    returns what it measured; ``overview(result)`` gives the run report's lines about it.  A
+    ``SceneSkipped`` raised by ``produce`` makes a skipped outcome (nothing written, the reason
+    kept)."""
     name: str
     title: str
     group: str
@@ -111,4 +120,6 @@ class ReportScene:
         except PrintedProgramError as exc:
             return Outcome(self.name, self.title, [], time.perf_counter() - begin,
                            failures=[f"not written, engine printed failed: {exc}"])
+        except SceneSkipped as exc:
+            return Outcome(self.name, self.title, [], time.perf_counter() - begin, skipped=str(exc))
         return Outcome(self.name, self.title, self.overview(result), time.perf_counter() - begin)

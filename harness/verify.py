@@ -44,6 +44,7 @@ import pandas as pd
 
 from .compare_runs import is_timing
 from .manifest import ENVIRONMENT, FILE as MANIFEST, FORMAT
+from .scene import Outcome
 from .trail import printed_digits
 
 REFERENCE_DIR = Path(__file__).resolve().parent.parent / "reference"
@@ -176,6 +177,14 @@ def manifest_differences(ref: dict | None, run: dict | None) -> dict[str, tuple]
     return {k: (ref.get(k), run.get(k)) for k in ENVIRONMENT if k not in COMMIT and ref.get(k) != run.get(k)}
 
 
+def _skipped(out_dir: Path, scene: str) -> str:
+    """Why the run skipped ``scene`` ("" where it ran)."""
+    try:
+        return Outcome.load(out_dir, scene).skipped
+    except (FileNotFoundError, ValueError):
+        return ""
+
+
 def verify(out_dir: Path, reference_dir: Path = REFERENCE_DIR, units: float = UNITS,
            scenes: list[str] | None = None) -> Verdict:
     """Compare the scenes of ``out_dir`` (``scenes``: those only) with ``reference_dir``."""
@@ -200,6 +209,10 @@ def verify(out_dir: Path, reference_dir: Path = REFERENCE_DIR, units: float = UN
     for scene in found:
         if scene not in known:
             unchecked.append(scene)
+            continue
+        skipped = _skipped(out_dir, scene)
+        if skipped:
+            files.append(FileResult(scene, problem=f"skipped in the run: {skipped}"))
             continue
         for stored in sorted((reference_dir / scene).glob(f"*{SUFFIX}")):
             name = f"{scene}/{stored.name[:-len(SUFFIX)]}.csv"
