@@ -148,6 +148,8 @@ def _summary(done: list, out_dir: Path) -> None:
     unexplained, not produced), this run's scenes and those run into the folder before."""
     from .diff import headline
     for item in done:
+        if item.skipped:
+            _out(f"{item.scene}: skipped, {item.skipped}")
         if item.counts is not None:
             _out(f"{item.scene}:")
             for engine, row in item.counts.iterrows():
