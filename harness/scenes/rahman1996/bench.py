@@ -1,7 +1,7 @@
 """Rahman (1996)'s part of ``linkrepro bench`` (the machine: ``harness/bench.py``): the cost
 of the CSSP balance of Tables 5.1-5.7 against the listing's flop count (``CSSP_*`` and the
 Newton's ``NEWTON_*`` of ``scenes/rahman1991/bench``); the knobs CSSP positions L and REAL*4
-constants."""
+constants; Exudyn's step (``multibody``, where Exudyn is installed)."""
 from __future__ import annotations
 
 import numpy as np
@@ -14,7 +14,9 @@ from ....port.rahman1996.data import Constants
 from ....port.rahman1996.mechanics import closed_loop_loads
 from ....port.rahman1996.objective import position_forms
 from ....port.rahman1996.quirks import CSSP_CORRECTED, CSSP_PRINTED
+from ... import multibody as exudyn_gate
 from ...bench import Computation, Knob, mprd
+from . import multibody
 from ..rahman1991.bench import NEWTON_RATES, NEWTON_STEP
 
 #: CSSP, per position and pass: the unit loads of 9 point masses (~300 each, frames, forces,
@@ -68,8 +70,32 @@ def cssp_cycle(count: int) -> tuple[int, float, np.ndarray]:
     return count, float(c.point_masses @ forms @ c.point_masses), solve_qp(2 * forms, bounds=c.qp_bounds)[0]
 
 
+def _against_port(result, port) -> tuple[float, str]:
+    """Largest |Exudyn - port| over the column's peak, the worst of Tables 5.3, 5.4, 5.7."""
+    if result is port:
+        return 0.0, "the reference"
+    return max(difference / peak for peak, difference in multibody.agreement(port, result).values()), ""
+
+
+def exudyn_step(quick: bool) -> list[Knob]:
+    """Exudyn's step against the corrected port's closed-loop columns (before masses, the port's
+    universal crank pin); none where Exudyn is not installed."""
+    if exudyn_gate.version() is None:
+        return []
+    steps = (1.0, 0.5) if quick else multibody.STEPS
+    masses = Constants.of(CsspInputs(), False).point_masses
+    settings = {f"{s:g} deg": (lambda s=s: multibody.simulate(masses, "universal", s)) for s in steps}
+    settings["port_corrected"] = lambda: multibody.port_columns()[0]["before"]
+    return [Knob("Exudyn step (CSSP)", "exudyn", "relative",
+                 f"rigid CSSP in Exudyn over {multibody.REVOLUTIONS} revolutions at a step of crank: largest "
+                 "|difference| / peak of Tables 5.3, 5.4, 5.7 against the corrected port (the reference; its time "
+                 "is the whole balance)", settings, "port_corrected", _against_port,
+                 lambda r: len(CRANK_DEG))]
+
+
 def knobs(quick: bool) -> list[Knob]:
-    """The CSSP positions L (``quick``: three settings) and REAL*4 constants against double."""
+    """The CSSP positions L (``quick``: three settings), REAL*4 constants against double,
+    Exudyn's step."""
     counts = (6, 12, 72) if quick else (6, 9, 12, 18, 24, 36, 72, 360)
     return [
         Knob("CSSP positions L", "port_corrected", "relative",
@@ -82,4 +108,4 @@ def knobs(quick: bool) -> list[Knob]:
              {"double": lambda: balance(CsspInputs(), CSSP_CORRECTED),
               "REAL*4 constants": lambda: balance(CsspInputs(), CSSP_CORRECTED.only("cssp_real4", True))},
              "double", _table_error, lambda r: len(CRANK_DEG)),
-    ]
+    ] + exudyn_step(quick)
