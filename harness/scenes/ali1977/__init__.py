@@ -4,7 +4,8 @@ from .appendix import SCENE as APPENDIX
 from .case3_convergence import SCENE as CASE3_CONVERGENCE
 from .conditioning import SCENE as CONDITIONING
 from .quantities import QUANTITIES
+from .quasi_static import SCENE as QUASI_STATIC
 from .tables import TABLES
 
-SCENES = [*TABLES, APPENDIX, CASE3_CONVERGENCE, CONDITIONING]
+SCENES = [*TABLES, APPENDIX, CASE3_CONVERGENCE, CONDITIONING, QUASI_STATIC]
 __all__ = ["SCENES", "TABLES", "QUANTITIES"]

@@ -35,8 +35,8 @@ Loads (frozen mode; the corrected port's, one physical force each, lbf):
 - Case II (the links' weights density * area * L, ``case2.DENSITY``): the extender's -(m2/g) a_P
   at P; the crank's -(m1/g) a_A at A; the follower's component along the follower,
   -(m4/g)(a_B . e4) e4, at B; the coupler's component along the coupler, -(m3/g)(a_A . e3) e3,
-  at B (``coupler_load_at``: eq. 30 sends it through the coupler, f7 = P7, into the crank, as a
-  force at B does), the thesis's eight system forces P1..P8 of eq. (30);
+  at the crank pin A, where the thesis lumps it (``coupler_load_at``="B" puts it at B): the
+  thesis's eight system forces P1..P8 of eq. (30), components it drops dropped here too;
 - Case III: the extender's weight in n equal parts (``case3``: density * area * L2 / n) at
   L2, L2 - L2/n, ..., L2/n from A, each -(w/g) a at its node (``n_nodes``).
 
@@ -166,7 +166,7 @@ def rigid(side: str, deg) -> Rigid:
                  partial.om2, partial.om3, partial.lengths, turn, shift, link)
 
 
-def point_loads(rig: Rigid, case: int, n_nodes: int = CASE3_NODES, coupler_load_at: str = "B") -> dict:
+def point_loads(rig: Rigid, case: int, n_nodes: int = CASE3_NODES, coupler_load_at: str = "A") -> dict:
     """The case's loads (the corrected port's, see the module's docstring) as physical forces:
     {where: (2, N) lbf, source frame}, where "P", "A", "B" or ("extender", r) for Case III's node
     r inches from A."""
@@ -219,7 +219,8 @@ class Model:
     "extender" (A -> P; its first node is the coupler's), "follower" (B -> O4); ``path_node``
     the node at P; ``crank_root`` the node at O2; ``crank_constraint`` the object holding (frozen)
     or driving (driven) the crank's rotation; ``loads`` the applied loads as (node, (fx, fy))
-    in lbf; ``rigid`` the port's rigid linkage at this angle (``Rigid`` over one angle)."""
+    in lbf, ``load_numbers`` their Exudyn load numbers; ``rigid`` the port's rigid linkage at this
+    angle (``Rigid`` over one angle); ``settings`` ``simulation_settings()``."""
     side: str
     case: int
     deg: float
@@ -234,6 +235,7 @@ class Model:
     loads: list
     rigid: Rigid
     settings: object = None
+    load_numbers: list = field(default_factory=list)
 
     def simulation_settings(self):
         """Exudyn SimulationSettings for deterministic solves (one thread, dense solver); Newton's
@@ -247,36 +249,50 @@ class Model:
         ss.linearSolver.solverType = exu.LinearSolverType.EXUdense
         ss.staticSolver.verboseMode = 0
         ss.timeIntegration.verboseMode = 0
-        ss.solutionSettings.writeSolutionToFile = False
+        ss.solution.file.write = False
         return ss
 
-    def linear_solution(self) -> np.ndarray:
-        """The linear static displacement of every ODE2 coordinate (in, rad): one Newton step of
-        Exudyn's static solver from the unloaded reference, u = -J^-1 r (J its Jacobian with the
-        constraints, r its residual: the loads).  Frozen mode only."""
+    def _residuals(self, solver, settings) -> tuple[np.ndarray, np.ndarray]:
+        """Exudyn's static residual at the current state with the loads, and without them (the
+        loads set to zero for the call, then restored)."""
+        solver.ComputeNewtonResidual(self.mbs, settings)
+        loaded = np.array(solver.GetSystemResidual())
+        vectors = [self.mbs.GetLoadParameter(n, "loadVector") for n in self.load_numbers]
+        for n in self.load_numbers:
+            self.mbs.SetLoadParameter(n, "loadVector", [0.0, 0.0, 0.0])
+        solver.ComputeNewtonResidual(self.mbs, settings)
+        unloaded = np.array(solver.GetSystemResidual())
+        for n, vector in zip(self.load_numbers, vectors):
+            self.mbs.SetLoadParameter(n, "loadVector", list(vector))
+        return loaded, unloaded
+
+    def _static_system(self) -> tuple[np.ndarray, np.ndarray]:
+        """Exudyn's static Jacobian (ODE2 and constraint rows) at the unloaded reference and its
+        load vector: the residual with the loads minus the residual without them (the latter is
+        the reference's rounding, a few 1e-6 lbf where the shear is stiff, not a load)."""
         if self.mode != "frozen":
             raise ValueError("a static solve needs the frozen structure (mode='frozen')")
         exu = require()
+        settings = self.settings or self.simulation_settings()
         solver = exu.MainSolverStatic()
-        solver.InitializeSolver(self.mbs, self.settings or self.simulation_settings())
-        solver.ComputeNewtonResidual(self.mbs, self.settings or self.simulation_settings())
-        solver.ComputeNewtonJacobian(self.mbs, self.settings or self.simulation_settings())
-        residual = np.array(solver.GetSystemResidual())
+        solver.InitializeSolver(self.mbs, settings)
+        loaded, unloaded = self._residuals(solver, settings)
+        solver.ComputeNewtonJacobian(self.mbs, settings)
         jacobian = np.array(solver.GetSystemJacobian())
-        solver.FinalizeSolver(self.mbs, self.settings or self.simulation_settings())
-        return -np.linalg.solve(jacobian, residual)[:len(residual) - self.mbs.systemData.AEsize()]
+        solver.FinalizeSolver(self.mbs, settings)
+        return jacobian, loaded - unloaded
+
+    def linear_solution(self) -> np.ndarray:
+        """The linear static displacement of every ODE2 coordinate (in, rad): the Newton step of
+        Exudyn's static solver from the unloaded reference, u = -J^-1 r (J its Jacobian with the
+        constraints, r its residual's load part: ``load_vector``).  Frozen mode only."""
+        jacobian, residual = self._static_system()
+        return -np.linalg.solve(jacobian, residual)[:self.mbs.systemData.ODE2Size()]
 
     def load_vector(self) -> np.ndarray:
         """The loads as Exudyn's static residual holds them at the unloaded reference (lbf, per
         ODE2 coordinate): a check that the model carries the loads ``loads`` says."""
-        exu = require()
-        solver = exu.MainSolverStatic()
-        settings = self.settings or self.simulation_settings()
-        solver.InitializeSolver(self.mbs, settings)
-        solver.ComputeNewtonResidual(self.mbs, settings)
-        residual = np.array(solver.GetSystemResidual())
-        solver.FinalizeSolver(self.mbs, settings)
-        return residual[:self.mbs.systemData.ODE2Size()]
+        return self._static_system()[1][:self.mbs.systemData.ODE2Size()]
 
     def node_displacement(self, node: int, solution: np.ndarray | None = None) -> np.ndarray:
         """(dx, dy, rotation) of ``node`` (in, in, rad): of ``solution`` (linear_solution's) or of
@@ -309,12 +325,17 @@ def crank_angle(rig: Rigid, t: float, deg0: float) -> float:
 
 def build(side: str, deg: float, case: int = 1, elements: int = 8, *, mode: str = "frozen",
           n_nodes: int = CASE3_NODES, masses: str = "lumped", shear_factor: float = SHEAR_FACTOR,
-          coupler_load_at: str = "B", loads: bool | None = None) -> Model:
+          coupler_load_at: str = "A", loads: bool | None = None, load_scale: float = 1.0,
+          shear_per_element: float | None = None) -> Model:
     """The flexible linkage of ``side`` at the crank angle ``deg`` (deg) with ``elements`` beam
-    elements per link (Case III: the extender's rounded up to a multiple of ``n_nodes``, so that
-    its nodes carry the loads), assembled.  ``mode`` "frozen" (crank held; the case's loads applied
+    elements per link (Case III: the extender's the least common multiple of ``elements`` and
+    ``n_nodes``, so that its nodes carry the loads and doubling ``elements`` halves every element),
+    assembled.  ``mode`` "frozen" (crank held; the case's loads applied
     unless ``loads`` is False) or "driven" (crank rotation om2 * t from ``deg``; no loads unless
-    ``loads``).  ``masses`` see the module's docstring."""
+    ``loads``), every load times ``load_scale``.  ``masses`` see the module's docstring.
+    Shear stiffness: ``shear_factor`` * EA, or where ``shear_per_element`` (kappa) is given,
+    kappa * 12 EI / h^2 for elements of length h (a shear flexibility that vanishes with h^2, as
+    the linear element's own error does: see the scene ``quasi_static``)."""
     exu = require()
     from exudyn.itemInterface import (CoordinateConstraint, LoadForceVector, MarkerNodeCoordinate, MarkerNodePosition,
                                       NodePointGround, NodeRigidBody2D, ObjectBeamGeometricallyExact2D,
@@ -339,7 +360,8 @@ def build(side: str, deg: float, case: int = 1, elements: int = 8, *, mode: str 
     perp = lambda v: np.array([-v[1], v[0]])                      # noqa: E731  k x v
     v_a = om2 * perp(a - o2)
     v_b = v_a + om3 * perp(b - a)
-    om4 = float(np.cross(b - o4, v_b) / np.dot(b - o4, b - o4))
+    arm = b - o4
+    om4 = float((arm[0] * v_b[1] - arm[1] * v_b[0]) / np.dot(arm, arm))         # v_B = om4 k x (B - O4)
     driven = mode == "driven"
 
     def velocity(x, link):
@@ -356,15 +378,16 @@ def build(side: str, deg: float, case: int = 1, elements: int = 8, *, mode: str 
     def add_link(link, start, end, length, count, first=None):
         nodes = [first if first is not None else add_node(start, link)]
         nodes += [add_node(start + (end - start) * (k / count), link) for k in range(1, count + 1)]
+        h = length / count
+        shear = shear_factor * ea if shear_per_element is None else shear_per_element * 12.0 * ei / (h * h)
         for n0, n1 in zip(nodes[:-1], nodes[1:]):
             mbs.AddObject(ObjectBeamGeometricallyExact2D(
-                nodeNumbers=[n0, n1], physicsLength=length / count, physicsMassPerLength=mass_per_length,
-                physicsCrossSectionInertia=rotary, physicsBendingStiffness=ei, physicsAxialStiffness=ea,
-                physicsShearStiffness=shear_factor * ea, includeReferenceRotations=False))
+                nodeNumbers=[n0, n1], length=h, massPerLength=mass_per_length, crossSectionInertia=rotary,
+                bendingStiffness=ei, axialStiffness=ea, shearStiffness=shear, includeReferenceRotations=False))
         return nodes
 
     l1, l2, l3, l4 = rig.lengths
-    ext_elements = elements if case != 3 else n_nodes * -(-elements // n_nodes)
+    ext_elements = elements if case != 3 else math.lcm(int(elements), int(n_nodes))
     nodes = {"crank": add_link("crank", o2, a, l1, elements)}
     nodes["coupler"] = add_link("coupler", a, b, l3, elements)
     nodes["extender"] = add_link("extender", a, p, l2, ext_elements, first=nodes["coupler"][0])
@@ -395,19 +418,19 @@ def build(side: str, deg: float, case: int = 1, elements: int = 8, *, mode: str 
     for key in applied:
         if isinstance(key, tuple):                                    # Case III: the extender's node r from A
             where[key] = nodes["extender"][int(round(key[1] / step))]
-    load_list = []
+    load_list, load_numbers = [], []
     if loads if loads is not None else not driven:
         for key, force in applied.items():
-            fx, fy = float(force[0, 0]), float(force[1, 0])
-            mbs.AddLoad(LoadForceVector(markerNumber=mbs.AddMarker(MarkerNodePosition(nodeNumber=where[key])),
-                                        loadVector=[fx, fy, 0.0]))
+            fx, fy = load_scale * float(force[0, 0]), load_scale * float(force[1, 0])
+            load_numbers.append(mbs.AddLoad(LoadForceVector(
+                markerNumber=mbs.AddMarker(MarkerNodePosition(nodeNumber=where[key])), loadVector=[fx, fy, 0.0])))
             load_list.append((where[key], (fx, fy)))
     if masses != "none":
         for node, m in _point_masses(rig, case, n_nodes, where, masses):
-            mbs.AddObject(ObjectMassPoint2D(nodeNumber=node, physicsMass=m))
+            mbs.AddObject(ObjectMassPoint2D(nodeNumber=node, mass=m))
     mbs.Assemble()
     model = Model(side, case, float(deg), mode, int(elements), sc, mbs, nodes, nodes["extender"][-1], root,
-                  crank_constraint, load_list, rig)
+                  crank_constraint, load_list, rig, load_numbers=load_numbers)
     model.settings = model.simulation_settings()
     return model
 
@@ -430,10 +453,12 @@ def _point_masses(rig: Rigid, case: int, n_nodes: int, where: dict, masses: str)
 
 
 def quasi_static(side: str, case: int, deg, elements: int = 8, n_nodes: int = CASE3_NODES,
-                 shear_factor: float = SHEAR_FACTOR, coupler_load_at: str = "B") -> dict:
+                 shear_factor: float = SHEAR_FACTOR, coupler_load_at: str = "A",
+                 shear_per_element: float | None = None) -> dict:
     """Exudyn's linear quasi-static path-point deflections over ``deg`` (deg): ``dx``, ``dy`` (in,
     source frame), ``rot`` (rad), one frozen model per angle."""
     rows = np.array([build(side, float(d), case, elements, n_nodes=n_nodes, shear_factor=shear_factor,
-                           coupler_load_at=coupler_load_at, masses="none").linear_deflection()
+                           coupler_load_at=coupler_load_at, masses="none",
+                           shear_per_element=shear_per_element).linear_deflection()
                      for d in np.atleast_1d(deg)])
     return {"dx": rows[:, 0], "dy": rows[:, 1], "rot": rows[:, 2]}
