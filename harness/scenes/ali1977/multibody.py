@@ -11,8 +11,11 @@ as a structure of Euler-Bernoulli members with axial and bending flexibility, no
 - the follower pinned at B and at its ground pivot (a two-force member: axial only, as eq. 29).
 
 Here every link is ``elements`` Exudyn ``ObjectBeamGeometricallyExact2D`` (axial EA, bending EI
-from ``data.EXAMPLE.section``; shear stiffness ``SHEAR_FACTOR`` * EA: Euler-Bernoulli to within
-the mesh error, see the scene ``quasi_static``), on ``NodeRigidBody2D`` nodes; the coupler and
+from ``data.EXAMPLE.section``) on ``NodeRigidBody2D`` nodes.  Shear stiffness: ``SHEAR_FACTOR``
+* EA (stiff: Euler-Bernoulli up to the linear elements' mesh error c h^2), or, with
+``shear_per_element`` = 1, 12 EI / h^2 per element, which cancels that error (MacNeal's residual
+bending flexibility): the nodes then move as Euler-Bernoulli beams' on any mesh (the scene
+``quasi_static`` measures both).  The coupler and
 the extender share their node at A (a rigid joint), the pins are two coordinate constraints
 (x, y), the supports coordinate constraints to ground.  The rigid configuration at the angle and
 the accelerations behind the inertia loads are the corrected port's (``quirks=CORRECTED``).
@@ -22,7 +25,8 @@ Two modes:
 - ``mode="frozen"``: the crank's root held in x, y and rotation: the instantaneous structure.
   ``Model.linear_deflection()`` is Exudyn's linear static answer (one Newton step of Exudyn's
   static solver from the unloaded reference: its tangent stiffness with the constraints, its
-  load vector; exact for a linear problem, so no load factor enters); ``mbs.SolveStatic`` gives
+  load vector, the residual with the loads less the residual without; exact for a linear
+  problem, so no load factor enters); ``mbs.SolveStatic`` gives
   the geometrically nonlinear one, ``mbs.ComputeODE2Eigenvalues`` the frozen structure's
   frequencies (with ``masses``).
 - ``mode="driven"``: the crank's root rotation prescribed, phi = om2 * t (a coordinate
@@ -68,8 +72,8 @@ from ....port.ali1977.structure import GRAVITY_IN
 
 SIDES = ("source", "cognate")
 CASES = (1, 2, 3)
-#: the shear stiffness of the beams, a multiple of their axial stiffness EA: the thesis's members
-#: have none (eq. 29); the quasi-static scene shows the answer no longer depends on it
+#: the beams' shear stiffness by default, a multiple of their axial stiffness EA: the thesis's
+#: members have no shear flexibility (eq. 29); the quasi-static scene measures what is left
 SHEAR_FACTOR = 1.0e4
 #: the listing's Case III nodes (n = 5)
 CASE3_NODES = 5
