@@ -375,7 +375,11 @@ def report(summary: dict, version: str) -> str:
               "against the d'Alembert forces -m a. The cognate's beta1 and eq. (31) take f4, f5 along -e2, -n2 and "
               "P7 along -e3 (from A' to B'), while its loads are the source's components along +e2, +n2 and, with "
               "case2.COGNATE_COUPLER = -1, +e3. Load by load, the port's crank and coupler contributions are "
-              "Exudyn's with the sign reversed; with the signs reversed back (and f7 = 0) they agree to rounding.",
+              "Exudyn's with the sign reversed; with the signs reversed back (and f7 = 0) they agree to rounding. "
+              "D037's search finds that the published Table II prefers the reconstruction's coupler sign (70 of 72 "
+              "cognate cells against 45): Ali's lost program most likely had it, which makes it an original bug "
+              "that the corrected engine should not keep (and tests/ali1977/test_cases23.py's column-7 check for "
+              "the cognate reads f4, f5 along +e2, +n2, the source's directions, not the cognate's).",
               "",
               "Both are left in the port (this scene does not own it) and reported. The other Case II loads "
               "(the extender's at P, the crank's at A, the follower's along the follower at B) agree load by load; "
