@@ -78,6 +78,8 @@ def _parser() -> tuple[_Parser, dict[str, _Parser], dict]:
                      help="output folder (default: out/); checked writable before the run starts")
     rep.add_argument("--skip-readings", action="store_true",
                      help="do not measure the OCR readings (they rebuild the listings with gfortran)")
+    rep.add_argument("--without", action="append", default=[], metavar="SCENE",
+                     help="leave this scene out (repeatable; `make test` leaves out the long dynamic study)")
     scenes = sub.add_parser("scenes", help="list the scenes")
     explain = sub.add_parser("explain", help="one published cell's trail: the published value, every engine's "
                              "value and status, the register entries, the listing lines behind it")
@@ -167,9 +169,13 @@ def _report_line(out_dir: Path, more=lambda folder: "") -> None:
 
 def _reproduce(args: argparse.Namespace, parser: _Parser) -> int:
     known = list(_scene_titles())
-    unknown = [name for name in dict.fromkeys(args.scenes) if name not in known]
+    unknown = [name for name in dict.fromkeys(args.scenes + args.without) if name not in known]
     if unknown:
         parser.error(_unknown_scenes(unknown, known))
+    if args.without:
+        args.scenes = [name for name in args.scenes or known if name not in args.without]
+        if not args.scenes:
+            parser.error("--without leaves no scene to run")
     from .engines import PrintedProgramError
     from .readings import CompilerError
     from .run import OutputFolderError, RunFailedError, reproduce

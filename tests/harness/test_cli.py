@@ -179,6 +179,19 @@ def test_output_file_that_cannot_be_written_during_the_run(tmp_path):
                "could not write", "published.csv")
 
 
+def test_without_leaves_scenes_out(tmp_path):
+    """``--without`` runs the named (or all) scenes but those; a name it does not know, or one
+    that leaves nothing to run, is a usage error."""
+    out = tmp_path / "out"
+    done = run("reproduce", FAST_SCENE, "rahman1996-table5_3", "--without", "rahman1996-table5_3", "--out", str(out),
+               "--skip-readings", cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    assert sorted(p.parent.name for p in out.glob("*/outcome.json")) == [FAST_SCENE]
+    error_line(run("reproduce", "--without", "no-such-scene", "--out", str(out), cwd=tmp_path), 2, "no-such-scene")
+    error_line(run("reproduce", FAST_SCENE, "--without", FAST_SCENE, "--out", str(out), cwd=tmp_path), 2,
+               "--without", "no scene")
+
+
 def test_missing_printed_program_in_reproduce(tmp_path):
     """The other engines still run and are written; the failure is one line and exit 1."""
     empty = tmp_path / "bin"
