@@ -1,1 +1,744 @@
-"""Placeholder (issue 27, in progress)."""
+"""Ali (1977): how right was the quasi-static K.E.D. method?  The Case I source four-bar's full
+elastodynamics in Exudyn (scene ali1977-elastodynamics).
+
+Ali computes the path point's deflection quasi-statically: at each crank angle the rigid
+linkage's acceleration gives the path-point mass's inertia load, and the links, frozen into a
+structure at that angle, deflect statically and linearly under it (the corrected port,
+``source_case1(quirks=CORRECTED)``).  Three things that method leaves out are measured here on
+the same linkage (the example: links 10, 10, 30, 25, 30 in, the 2 lbf path-point mass, the 0.5 in
+round section of E = 1e7 psi, massless links, Case I), in Exudyn's beam model of it
+(``multibody``: the frozen structure at an angle, or the crank driven at constant speed):
+
+- the structure's own dynamics: the frozen linkage's first natural frequencies over the cycle,
+  against the drive's harmonics;
+- the deflection's inertia: the elastodynamic steady state (the crank turned at constant speed,
+  the deflections integrated in time until successive revolutions agree), against the
+  quasi-static answer; over a sweep of speeds, where the quasi-static answer's error passes
+  10 % of its peak deflection;
+- geometric nonlinearity: the same load on the frozen structure, solved nonlinearly.
+
+Beside Exudyn, the thesis's own structure is run dynamically (``linear_periodic``): the path
+point's 2x2 stiffness from the port's flexibility (beta^T F beta, eq. 6; massless links, so the
+point carries all the inertia), m u'' + c u' + K(theta) u = -m a(theta), its periodic solution
+found directly (the one-revolution map's fixed point): the 1977 structure with the inertia of its
+deflection kept, small-deflection theory.  Where deflections are small it and Exudyn agree; the
+difference is geometric nonlinearity.
+
+Damping: the thesis gives none.  Stiffness-proportional (Kelvin-Voigt) damping, the beams' bending,
+axial and shear damping beta times their stiffnesses, beta = 2 zeta / (2 pi 10 Hz): a modal
+damping ratio zeta at 10 Hz, about the first mode (zeta f1 / 10 Hz for a mode of frequency f1).
+Stiffness-proportional, because mass-proportional damping would act on the links' absolute
+velocities, a drag on the rigid motion itself; zeta = 5 %, the upper end of what bolted and
+pinned metal linkages show (1-5 %): at 2 % Exudyn's time integration of this model does not get
+through the start-up at 300 rpm (shown), and the thesis's structure run dynamically gives the
+2 % answers.
+
+Units: inch, pound-force, second; masses lbf s^2/in; crank angles in degrees; frequencies in Hz.
+"""
+from __future__ import annotations
+
+import functools
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from ....port.ali1977.case1 import source_case1, source_mechanics
+from ....port.ali1977.data import EXAMPLE
+from ....port.ali1977.quirks import CORRECTED
+from ....port.ali1977.structure import GRAVITY_IN, flexibility
+from ... import multibody, progress
+from ...csv_output import FULL_PRECISION, write_csv
+from ...scene import ReportScene
+
+NAME = "ali1977-elastodynamics"
+TITLE = "Ali (1977): the quasi-static K.E.D. deflections against the four-bar's elastodynamics (Exudyn)"
+GROUP = NAME
+#: the longest scene: it starts first
+START = 0
+SIDE, CASE = "source", 1
+#: the design speed, rev/min
+RPM = 300.0
+#: the path point's mass, lbf s^2/in
+MASS = EXAMPLE.mass_lbf / GRAVITY_IN
+#: modal damping ratio at DAMPING_HZ (stiffness-proportional), and the lower one of the study
+ZETA, ZETA_LOW = 0.05, 0.02
+DAMPING_HZ = 10.0
+#: beam elements per link (every link alike): measured, 8 -> 16 moves the 300 rpm steady state
+#: by 0.004 in, 0.1 % of its peak (``convergence.csv``)
+ELEMENTS = 8
+#: the beams' shear stiffness, the builder's ``shear_per_element``: 12 EI / h^2 per element, with
+#: which its linear elements move at their nodes as Euler-Bernoulli beams (MacNeal), so that the
+#: frozen structure's stiffness at the path point is the port's to rounding on any mesh; the
+#: builder's default stiff shear (1e4 EA) makes Exudyn's time integration fail (Newton diverges
+#: about one revolution in, measured)
+SHEAR_PER_ELEMENT = 1.0
+#: time steps per revolution from 120 to 300 rpm; below, 360 ceil(120 / rpm), so that a step is
+#: never longer than 1/60 of the highest first-mode period; above, 360 ceil(rpm / 300), so that it
+#: is never longer than at 300 rpm (at 400 rpm with 360 steps Exudyn's Newton iteration diverges in
+#: the start-up, measured)
+STEPS_PER_REV = 360
+#: successive revolutions agree to this (in, largest difference of the path point over a
+#: revolution): a steady state; MAX_REVOLUTIONS at most
+PERIODICITY_IN = 1e-6
+MAX_REVOLUTIONS = 40
+#: Exudyn's implicit generalized-alpha: spectral radius (1.0 gives noise in the massless links'
+#: accelerations), Newton's relative tolerance (the builder's: its residual's rounding floor)
+SPECTRAL_RADIUS = 0.8
+NEWTON_TOLERANCE = 1e-6
+#: the frozen structure's frequencies: every 10 deg in Exudyn (the port: every degree)
+FREQUENCY_ANGLES = np.arange(0.0, 360.0, 10.0)
+#: the nonlinear static solve: every 10 deg
+STATIC_ANGLES = np.arange(0.0, 360.0, 10.0)
+#: the speed sweep in Exudyn, rev/min; the linear dynamics of the thesis's structure every rev/min
+SWEEP_RPM = (30.0, 40.0, 50.0, 55.0, 60.0, 65.0, 70.0, 80.0, 90.0, 100.0, 120.0, 150.0, 200.0, 250.0, 300.0,
+             350.0, 400.0)
+LINEAR_RPM = np.arange(20.0, 401.0, 1.0)
+LINEAR_STEPS = 720
+#: the quasi-static answer's error, as a fraction of its peak deflection, that sets the speed limit
+ERROR_LEVEL = 0.10
+#: the speed of the step and mesh checks near the limit, rev/min
+LIMIT_CHECK_RPM = 60.0
+
+
+def damping_beta(zeta: float) -> float:
+    """The stiffness-proportional damping coefficient (s): zeta at DAMPING_HZ."""
+    return 2.0 * zeta / (2.0 * math.pi * DAMPING_HZ)
+
+
+def steps_per_rev(rpm: float) -> int:
+    """Time steps per revolution at ``rpm``: STEPS_PER_REV, more below 120 and above 300 rpm."""
+    return STEPS_PER_REV * max(1, math.ceil(120.0 / rpm), math.ceil(rpm / RPM))
+
+
+# --- the thesis's structure (the corrected port) ---------------------------------------------------
+
+def port_stiffness(deg) -> np.ndarray:
+    """The path point's 2x2 stiffness (lbf/in) over ``deg``: the inverse of the x, y block of the
+    port's compliance beta^T F beta (eq. 6, corrected; no load on the rotation, as Case I)."""
+    mech = source_mechanics(np.asarray(deg, dtype=float), quirks=CORRECTED)
+    flex = flexibility(*mech.flex_lengths, EXAMPLE.section, CORRECTED)
+    compliance = np.swapaxes(mech.beta, -1, -2) @ flex @ mech.beta
+    return np.linalg.inv(compliance[:, :2, :2])
+
+
+def frequencies_of(stiffness: np.ndarray) -> np.ndarray:
+    """The two natural frequencies (Hz) of the path-point mass on the stiffness (.., 2, 2)."""
+    return np.sqrt(np.linalg.eigvalsh(stiffness / MASS)) / (2.0 * math.pi)
+
+
+def quasi_static(deg, rpm: float) -> np.ndarray:
+    """The corrected port's Case I deflection (dx, dy) (N, 2), in, at ``rpm``."""
+    out = source_case1(np.asarray(deg, dtype=float), rpm=rpm, quirks=CORRECTED)
+    return np.column_stack([out["dx"], out["dy"]])
+
+
+def rigid_path_point(deg, rpm: float = RPM) -> np.ndarray:
+    """The rigid path point (x, y) (N, 2), in, from the corrected port."""
+    out = source_case1(np.asarray(deg, dtype=float), rpm=rpm, quirks=CORRECTED)
+    return np.column_stack([out["xp"], out["yp"]])
+
+
+def linear_periodic(rpms, zeta: float, steps: int = LINEAR_STEPS) -> tuple[np.ndarray, np.ndarray]:
+    """The thesis's structure run dynamically: m u'' + beta K u' + K u = -m a over a revolution at
+    each of ``rpms`` (S,), K = ``port_stiffness``, a the port's rigid acceleration, beta =
+    ``damping_beta(zeta)``; the trapezoidal rule (Newmark's average acceleration) in ``steps``
+    steps per revolution, and its periodic solution: the fixed point of the revolution's affine
+    map.  Returns (the deflections (S, steps, 2) at deg = 360 k / steps, the map's spectral
+    radius (S,): how fast a start-up transient dies per revolution)."""
+    rpms = np.atleast_1d(np.asarray(rpms, dtype=float))
+    deg = np.arange(steps) * 360.0 / steps
+    stiffness = port_stiffness(deg)
+    load = np.stack([-MASS * source_mechanics(deg, rpm=r, quirks=CORRECTED).acc for r in rpms])   # (S, N, 2)
+    beta, eye = damping_beta(zeta), np.eye(2)
+    h = (60.0 / rpms / steps)[:, None, None]
+    maps, phi, g = [], np.broadcast_to(np.eye(4), (len(rpms), 4, 4)).copy(), np.zeros((len(rpms), 4))
+    for i in range(steps):
+        j = (i + 1) % steps
+        k0, k1 = stiffness[i] / MASS, stiffness[j] / MASS
+        # u1 - h/2 v1 = u0 + h/2 v0;  v1 + h/2 (beta K1 v1 + K1 u1)/m - h/2 P1/m = v0 + h/2 a0
+        lhs = np.block([[np.broadcast_to(eye, h.shape[:1] + (2, 2)), -h / 2 * eye],
+                        [h / 2 * k1, eye + h / 2 * beta * k1]])
+        rhs = np.block([[np.broadcast_to(eye, h.shape[:1] + (2, 2)), h / 2 * eye],
+                        [-h / 2 * k0, eye - h / 2 * beta * k0]])
+        force = np.concatenate([np.zeros((len(rpms), 2)), h[:, 0] / 2 * (load[:, i] + load[:, j]) / MASS], axis=1)
+        step_map, step_shift = np.linalg.solve(lhs, rhs), np.linalg.solve(lhs, force[..., None])[..., 0]
+        maps.append((step_map, step_shift))
+        phi = step_map @ phi
+        g = np.einsum("sij,sj->si", step_map, g) + step_shift
+    x = np.linalg.solve(np.eye(4) - phi, g[..., None])[..., 0]
+    out = np.empty((len(rpms), steps, 2))
+    for i, (step_map, step_shift) in enumerate(maps):
+        out[:, i] = x[:, :2]
+        x = np.einsum("sij,sj->si", step_map, x) + step_shift
+    return out, np.abs(np.linalg.eigvals(phi)).max(axis=1)
+
+
+# --- Exudyn, on the builder's model -------------------------------------------------------------
+
+def _mb():
+    from . import multibody as mb          # imports Exudyn's utilities: only once it is known to be there
+    return mb
+
+
+def _jacobian(model) -> np.ndarray:
+    """Exudyn's static Jacobian (ODE2 and constraint rows) of a frozen model at its reference."""
+    exu = multibody.require()
+    solver, settings = exu.MainSolverStatic(), model.settings
+    solver.InitializeSolver(model.mbs, settings)
+    solver.ComputeNewtonResidual(model.mbs, settings)
+    solver.ComputeNewtonJacobian(model.mbs, settings)
+    jacobian = np.array(solver.GetSystemJacobian())
+    solver.FinalizeSolver(model.mbs, settings)
+    return jacobian
+
+
+def exudyn_stiffness(deg: float, elements: int = ELEMENTS) -> tuple[np.ndarray, float]:
+    """The frozen structure's stiffness at the path point (2x2, lbf/in) in Exudyn: its Jacobian
+    condensed onto the path point's x, y (the links are massless, so this is exact for the
+    frequencies); and, as a check of the condensation, the largest difference (in) between the
+    compliance times the Case I load and the builder's own linear deflection under it."""
+    mb = _mb()
+    model = mb.build(SIDE, float(deg), CASE, elements, masses="none", shear_per_element=SHEAR_PER_ELEMENT)
+    jacobian = _jacobian(model)
+    index = model.mbs.GetNodeODE2Index(model.path_node)
+    unit = np.zeros((len(jacobian), 2))
+    unit[index, 0] = unit[index + 1, 1] = 1.0
+    # Exudyn's static residual holds an applied force f as +f: u = -J^-1 r = -J^-1 f
+    columns = -np.linalg.solve(jacobian, unit)
+    compliance = columns[index:index + 2]
+    load = np.array(model.loads[0][1])
+    check = float(np.abs(compliance @ load - model.linear_deflection()[:2]).max())
+    return np.linalg.inv(compliance), check
+
+
+def exudyn_static(deg: float, elements: int = ELEMENTS, load_steps: int = 10) -> tuple[np.ndarray, np.ndarray]:
+    """The path point's deflection (dx, dy), in, under the Case I load at ``deg`` (300 rpm):
+    Exudyn's linear answer and its geometrically nonlinear static solve (``load_steps`` load
+    steps, Newton to NEWTON_TOLERANCE)."""
+    mb = _mb()
+    model = mb.build(SIDE, float(deg), CASE, elements, masses="none", shear_per_element=SHEAR_PER_ELEMENT)
+    linear = model.linear_deflection()[:2]
+    settings = model.settings
+    settings.staticSolver.numberOfLoadSteps = load_steps
+    settings.staticSolver.newton.relativeTolerance = NEWTON_TOLERANCE
+    model.mbs.SolveStatic(settings)
+    return linear, model.node_displacement(model.path_node)[:2]
+
+
+@dataclass
+class SteadyState:
+    """A driven run: the path point's deflection (steps, 2) over its last revolution at the crank
+    angles ``deg`` (deg), the revolutions run, the largest difference (in) between the last two
+    revolutions (``periodicity``) and between the last and the one before it (``period2``), and
+    the steady state's period in revolutions (1, 2, or 0: none within MAX_REVOLUTIONS);
+    ``failed_at`` the time (s) where Exudyn's Newton iteration diverged (its deflection then NaN),
+    NaN where it did not."""
+    rpm: float
+    elements: int
+    steps: int
+    zeta: float
+    start_deg: float
+    deg: np.ndarray
+    deflection: np.ndarray
+    revolutions: int
+    periodicity: float
+    period2: float
+    period: int
+    failed_at: float = math.nan
+
+
+def steady_state(rpm: float, elements: int = ELEMENTS, steps: int | None = None, zeta: float = ZETA,
+                 start_deg: float = 0.0) -> SteadyState:
+    """``_steady_state``, each run once per process (the sweep and the checks share runs)."""
+    return _steady_state(float(rpm), int(elements), int(steps or steps_per_rev(rpm)), float(zeta), float(start_deg))
+
+
+@functools.lru_cache(maxsize=64)
+def _steady_state(rpm: float, elements: int, steps: int, zeta: float, start_deg: float) -> SteadyState:
+    """The elastodynamic steady state at ``rpm``: the builder's driven linkage (started at
+    ``start_deg`` with the rigid linkage's velocities, undeformed), the beams damped
+    (``damping_beta(zeta)``), the crank speed set to ``rpm``; Exudyn's generalized-alpha in
+    ``steps`` steps per revolution, revolution after revolution until two successive ones (or,
+    a period-2 motion, the last and the one two before) agree to PERIODICITY_IN."""
+    exu = multibody.require()
+    mb = _mb()
+    model = mb.build(SIDE, float(start_deg), CASE, elements, mode="driven", shear_per_element=SHEAR_PER_ELEMENT)
+    _damp(model, damping_beta(zeta))
+    _set_speed(model, rpm)
+    mbs, node = model.mbs, model.path_node
+    positions: list = []
+    found = {"period": 0, "diffs": (math.inf, math.inf)}
+
+    def each_step(mbs_, t):
+        positions.append(mbs_.GetNodeOutput(node, exu.OutputVariableType.Position)[:2])
+        n = len(positions) - 1
+        if n and n % steps == 0 and n >= 3 * steps:
+            track = np.asarray(positions[n - 3 * steps:n]).reshape(3, steps, 2)
+            one, two = float(np.abs(track[2] - track[1]).max()), float(np.abs(track[2] - track[0]).max())
+            found["diffs"] = (one, two)
+            if one < PERIODICITY_IN or two < PERIODICITY_IN:
+                found["period"] = 1 if one < PERIODICITY_IN else 2
+                return False
+        return True
+
+    mbs.SetPreStepUserFunction(each_step)
+    mbs.Assemble()
+    period_s = 60.0 / rpm
+    settings = model.settings
+    settings.linearSolver.solverType = exu.LinearSolverType.EigenSparse
+    settings.timeIntegration.numberOfSteps = MAX_REVOLUTIONS * steps + 1
+    settings.timeIntegration.endTime = (MAX_REVOLUTIONS * steps + 1) * period_s / steps
+    settings.timeIntegration.adaptiveStep = False
+    settings.timeIntegration.newton.useModifiedNewton = False
+    settings.timeIntegration.newton.relativeTolerance = NEWTON_TOLERANCE
+    settings.timeIntegration.generalizedAlpha.spectralRadius = SPECTRAL_RADIUS
+    settings.timeIntegration.generalizedAlpha.computeInitialAccelerations = False   # massless links
+    settings.solution.sensors.writePeriod = period_s
+    settings.show.statistics = False
+    settings.show.computationTime = False
+    deg = start_deg + np.arange(steps) * 360.0 / steps
+    exu.SetWriteToConsole(False)          # a diverged run is a result here (``failed_at``), not a console message
+    try:
+        mbs.SolveDynamic(settings)
+    except exu.SolverError:
+        nan = np.full((steps, 2), math.nan)
+        return SteadyState(rpm, elements, steps, zeta, start_deg, deg, nan, len(positions) // steps, math.nan, math.nan,
+                           0, (len(positions) - 1) * period_s / steps)
+    finally:
+        exu.SetWriteToConsole(True)
+    n = (len(positions) - 1) // steps * steps
+    last = np.asarray(positions[n - steps:n]) - rigid_path_point(deg, rpm)
+    one, two = found["diffs"]
+    return SteadyState(rpm, elements, steps, zeta, start_deg, deg, last, n // steps, one, two, found["period"])
+
+
+def _damp(model, beta: float) -> None:
+    """Every beam of ``model`` damped: bending, axial and shear damping beta times the stiffness.
+    (Not in the builder, which has no damping: added here to its model.)"""
+    mbs = model.mbs
+    for item in range(mbs.systemData.NumberOfObjects()):
+        beam = mbs.GetObject(item)
+        if beam["objectType"] == "BeamGeometricallyExact2D":
+            for what in ("bending", "axial", "shear"):
+                mbs.SetObjectParameter(item, f"{what}Damping", beta * beam[f"{what}Stiffness"])
+
+
+def _set_speed(model, rpm: float) -> None:
+    """The driven ``model`` (built at the example's 300 rpm) turned at ``rpm``: its nodes' initial
+    velocities and its crank drive scaled by rpm / 300 (at constant crank speed every rigid
+    velocity is proportional to it).  (The builder has no speed: added here to its model.)"""
+    mbs, scale = model.mbs, rpm / EXAMPLE.rpm
+    if not math.isclose(model.rigid.om2, 2.0 * math.pi * EXAMPLE.rpm / 60.0, rel_tol=1e-12):
+        raise ValueError(f"the builder's crank speed {model.rigid.om2} rad/s is not the example's {EXAMPLE.rpm} rpm")
+    for node in range(mbs.systemData.NumberOfNodes()):
+        data = mbs.GetNode(node)
+        if data["nodeType"] == "RigidBody2D":
+            mbs.SetNodeParameter(node, "initialVelocities", [scale * v for v in data["initialVelocities"]])
+    om2 = scale * model.rigid.om2
+    mbs.SetObjectParameter(model.crank_constraint, "offsetUserFunction", lambda mbs_, t, item, offset: om2 * t)
+
+
+# --- the study ------------------------------------------------------------------------------------
+
+def error_of(deflection: np.ndarray, reference: np.ndarray) -> tuple[float, float, float]:
+    """(peak |reference|, peak |deflection|, largest |deflection - reference|) over a revolution, in."""
+    return (float(np.hypot(*reference.T).max()), float(np.hypot(*deflection.T).max()),
+            float(np.hypot(*(deflection - reference).T).max()))
+
+
+def crossing(rpm, ratio, level: float = ERROR_LEVEL) -> float:
+    """The speed where ``ratio`` first passes ``level``, interpolated linearly; NaN if never."""
+    rpm, ratio = np.asarray(rpm, dtype=float), np.asarray(ratio, dtype=float)
+    above = np.flatnonzero(ratio > level)
+    if not len(above):
+        return math.nan
+    k = above[0]
+    if k == 0:
+        return float(rpm[0])
+    return float(rpm[k - 1] + (level - ratio[k - 1]) * (rpm[k] - rpm[k - 1]) / (ratio[k] - ratio[k - 1]))
+
+
+def frequencies() -> tuple[pd.DataFrame, pd.DataFrame]:
+    """The frozen structure's two natural frequencies: Exudyn at FREQUENCY_ANGLES (ELEMENTS and
+    2 ELEMENTS per link), the port's structure at every degree."""
+    rows = []
+    for deg in FREQUENCY_ANGLES:
+        k8, check = exudyn_stiffness(deg, ELEMENTS)
+        k16, _ = exudyn_stiffness(deg, 2 * ELEMENTS)
+        (f1, f2), (g1, g2) = frequencies_of(k8), frequencies_of(k16)
+        (p1, p2) = frequencies_of(port_stiffness([deg])[0])
+        rows.append({"crank_deg": deg, "f1_exudyn": f1, "f2_exudyn": f2, "f1_exudyn_fine": g1, "f2_exudyn_fine": g2,
+                     "f1_port": p1, "f2_port": p2, "condensation_check_in": check})
+    deg = np.arange(0.0, 360.0, 1.0)
+    port = frequencies_of(port_stiffness(deg))
+    return pd.DataFrame(rows), pd.DataFrame({"crank_deg": deg, "f1_port": port[:, 0], "f2_port": port[:, 1]})
+
+
+def statics() -> pd.DataFrame:
+    """At STATIC_ANGLES, the 300 rpm Case I load: the port's deflection, Exudyn's linear and
+    nonlinear ones (dx, dy, in), the nonlinear one also on twice the mesh and in twice the load
+    steps."""
+    port = quasi_static(STATIC_ANGLES, RPM)
+    rows = []
+    for k, deg in enumerate(STATIC_ANGLES):
+        linear, nonlinear = exudyn_static(deg)
+        _, fine = exudyn_static(deg, 2 * ELEMENTS)
+        _, stepped = exudyn_static(deg, load_steps=20)
+        rows.append({"crank_deg": deg, "port_dx": port[k, 0], "port_dy": port[k, 1],
+                     "exudyn_linear_dx": linear[0], "exudyn_linear_dy": linear[1],
+                     "nonlinear_dx": nonlinear[0], "nonlinear_dy": nonlinear[1],
+                     "nonlinear_fine_mesh_change": float(np.hypot(*(fine - nonlinear))),
+                     "nonlinear_load_steps_change": float(np.hypot(*(stepped - nonlinear)))})
+    return pd.DataFrame(rows)
+
+
+def orbit_change(a: SteadyState, b: SteadyState) -> float:
+    """The largest distance (in) between two steady states' deflections at the crank angles both
+    sampled (every 360 / gcd(steps) deg from 0; the runs start at multiples of it)."""
+    n = math.gcd(a.steps, b.steps)
+    grid = np.arange(n) * 360.0 / n
+
+    def on_grid(run):
+        index = np.rint(((grid - run.start_deg) % 360.0) * run.steps / 360.0).astype(int) % run.steps
+        return run.deflection[index]
+    return float(np.hypot(*(on_grid(a) - on_grid(b)).T).max())
+
+
+def _row(kind: str, run: SteadyState, reference: SteadyState | None) -> dict:
+    qs = quasi_static(run.deg, run.rpm)
+    peak_qs, peak, error = error_of(run.deflection, qs)
+    change = math.nan if reference is None else orbit_change(run, reference)
+    return {"study": kind, "rpm": run.rpm, "elements": run.elements, "steps_per_rev": run.steps, "zeta": run.zeta,
+            "start_deg": run.start_deg, "revolutions": run.revolutions, "period": run.period,
+            "periodicity_in": run.periodicity, "period2_in": run.period2, "quasi_static_peak": peak_qs,
+            "dynamic_peak": peak, "max_error": error, "error_over_peak": error / peak_qs,
+            "change_from_standard": change, "newton_diverged_at_s": run.failed_at}
+
+
+def study_300() -> tuple[SteadyState, pd.DataFrame]:
+    """The 300 rpm steady state (ELEMENTS, STEPS_PER_REV, ZETA, from 0 deg) and its checks: half
+    the step, half and twice the mesh's element length, another start, the lower damping; and at
+    LIMIT_CHECK_RPM, near the speed limit, half the step and twice the mesh."""
+    progress.note(NAME, "300 rpm steady state")
+    standard = steady_state(RPM)
+    rows = [_row("standard", standard, None)]
+    for kind, kwargs in (("half step", dict(steps=2 * STEPS_PER_REV)), ("coarse mesh", dict(elements=ELEMENTS // 2)),
+                         ("fine mesh", dict(elements=2 * ELEMENTS)), ("start at 180 deg", dict(start_deg=180.0)),
+                         (f"zeta {ZETA_LOW:g}", dict(zeta=ZETA_LOW)),
+                         (f"zeta {ZETA_LOW:g}, half step", dict(zeta=ZETA_LOW, steps=2 * STEPS_PER_REV))):
+        progress.note(NAME, f"300 rpm: {kind}")
+        rows.append(_row(kind, steady_state(RPM, **kwargs), standard))
+    near = steady_state(LIMIT_CHECK_RPM)
+    rows.append(_row(f"{LIMIT_CHECK_RPM:g} rpm", near, None))
+    for kind, kwargs in (("half step", dict(steps=2 * steps_per_rev(LIMIT_CHECK_RPM))),
+                         ("fine mesh", dict(elements=2 * ELEMENTS))):
+        progress.note(NAME, f"{LIMIT_CHECK_RPM:g} rpm: {kind}")
+        rows.append(_row(f"{LIMIT_CHECK_RPM:g} rpm, {kind}", steady_state(LIMIT_CHECK_RPM, **kwargs), near))
+    return standard, pd.DataFrame(rows)
+
+
+def sweep() -> pd.DataFrame:
+    """Exudyn's steady state at SWEEP_RPM (ELEMENTS, ``steps_per_rev``, ZETA) against the
+    quasi-static answer, with the linear dynamics of the thesis's structure at the same speeds."""
+    linear, _ = linear_periodic(SWEEP_RPM, ZETA)
+    rows = []
+    for k, rpm in enumerate(SWEEP_RPM):
+        progress.note(NAME, f"sweep, {rpm:g} rpm")
+        row = _row("sweep", steady_state(rpm), None)
+        deg = np.arange(LINEAR_STEPS) * 360.0 / LINEAR_STEPS
+        _, lin_peak, lin_error = error_of(linear[k], quasi_static(deg, rpm))
+        row.update({"linear_peak": lin_peak, "linear_error_over_peak": lin_error / row["quasi_static_peak"]})
+        rows.append(row)
+    return pd.DataFrame(rows).drop(columns=["study", "change_from_standard", "newton_diverged_at_s"])
+
+
+def linear_sweep() -> pd.DataFrame:
+    """The linear dynamics of the thesis's structure at every LINEAR_RPM, for ZETA and ZETA_LOW:
+    the peak quasi-static deflection, the dynamic peak, the quasi-static answer's error over its
+    peak, and how much of a start-up transient is left after a revolution."""
+    deg = np.arange(LINEAR_STEPS) * 360.0 / LINEAR_STEPS
+    frames = []
+    for zeta in (ZETA, ZETA_LOW):
+        out, decay = linear_periodic(LINEAR_RPM, zeta)
+        rows = []
+        for k, rpm in enumerate(LINEAR_RPM):
+            peak_qs, peak, error = error_of(out[k], quasi_static(deg, rpm))
+            rows.append({"zeta": zeta, "rpm": rpm, "quasi_static_peak": peak_qs, "dynamic_peak": peak,
+                         "error_over_peak": error / peak_qs, "transient_left_per_rev": decay[k]})
+        frames.append(pd.DataFrame(rows))
+    return pd.concat(frames, ignore_index=True)
+
+
+# --- the scene ------------------------------------------------------------------------------------
+
+def run(out_dir: Path) -> dict:
+    """out/ali1977-elastodynamics/: frequencies.csv (Exudyn and the port every 10 deg),
+    frequencies_port.csv (every degree), statics.csv (the 300 rpm load: port, Exudyn linear and
+    nonlinear), steady_300.csv (the 300 rpm steady state over the revolution), convergence.csv
+    (its checks), sweep.csv (Exudyn's speed sweep), linear_sweep.csv (the thesis's structure with
+    the deflection's inertia, every rev/min), summary.csv, elastodynamics.png, cycle.png,
+    report.md."""
+    multibody.require()
+    target = out_dir / NAME
+    target.mkdir(parents=True, exist_ok=True)
+    progress.note(NAME, "frozen frequencies")
+    freq, freq_port = frequencies()
+    progress.note(NAME, "nonlinear statics")
+    static = statics()
+    standard, convergence = study_300()
+    linear300, _ = linear_periodic([RPM], ZETA, STEPS_PER_REV)
+    qs300 = quasi_static(standard.deg, RPM)
+    cycle = pd.DataFrame({"crank_deg": standard.deg, "quasi_static_dx": qs300[:, 0], "quasi_static_dy": qs300[:, 1],
+                          "dynamic_dx": standard.deflection[:, 0], "dynamic_dy": standard.deflection[:, 1],
+                          "linear_dynamic_dx": linear300[0, :, 0], "linear_dynamic_dy": linear300[0, :, 1]})
+    table = sweep()
+    progress.note(NAME, "linear dynamics, every rev/min")
+    linear = linear_sweep()
+    summary = summarise(freq, freq_port, static, convergence, table, linear)
+    write_csv(freq, target / "frequencies.csv", FULL_PRECISION)
+    write_csv(freq_port, target / "frequencies_port.csv", FULL_PRECISION)
+    write_csv(static, target / "statics.csv", FULL_PRECISION)
+    write_csv(cycle, target / "steady_300.csv", FULL_PRECISION)
+    write_csv(convergence, target / "convergence.csv", FULL_PRECISION)
+    write_csv(table, target / "sweep.csv", FULL_PRECISION)
+    write_csv(linear, target / "linear_sweep.csv", FULL_PRECISION)
+    write_csv(pd.DataFrame([summary]), target / "summary.csv", FULL_PRECISION)
+    progress.note(NAME, "figures")
+    plot_overview(freq, freq_port, table, linear, summary, target / "elastodynamics.png")
+    plot_cycle(cycle, static, convergence, summary, target / "cycle.png")
+    (target / "report.md").write_text(report(freq, static, convergence, table, summary))
+    return summary
+
+
+def summarise(freq, freq_port, static, convergence, table, linear) -> dict:
+    """The scene's numbers, one record (every one measured above)."""
+    peak_static = np.hypot(static["port_dx"], static["port_dy"])
+    nonlinear_gap = np.hypot(static["nonlinear_dx"] - static["port_dx"], static["nonlinear_dy"] - static["port_dy"])
+    exudyn_linear_gap = np.hypot(static["exudyn_linear_dx"] - static["port_dx"],
+                                 static["exudyn_linear_dy"] - static["port_dy"])
+    at_peak = int(np.argmax(peak_static))
+    std = convergence.set_index("study")
+    low = linear[linear["zeta"] == ZETA_LOW]
+    high = linear[linear["zeta"] == ZETA]
+    crank_hz = RPM / 60.0
+    return {"f1_min_hz": float(freq_port["f1_port"].min()), "f1_max_hz": float(freq_port["f1_port"].max()),
+            "f2_min_hz": float(freq_port["f2_port"].min()), "f2_max_hz": float(freq_port["f2_port"].max()),
+            "f1_exudyn_over_port_max": float((freq["f1_exudyn"] / freq["f1_port"] - 1.0).abs().max()),
+            "f1_exudyn_fine_over_port_max": float((freq["f1_exudyn_fine"] / freq["f1_port"] - 1.0).abs().max()),
+            "crank_hz": crank_hz,
+            "quasi_static_peak": float(std.loc["standard", "quasi_static_peak"]),
+            "static_grid_peak_deg": float(static["crank_deg"][at_peak]),
+            "nonlinear_peak": float(np.hypot(static["nonlinear_dx"], static["nonlinear_dy"]).max()),
+            "nonlinear_gap_max": float(nonlinear_gap.max()),
+            "nonlinear_gap_over_peak": float(nonlinear_gap.max() / peak_static.max()),
+            "nonlinear_fine_mesh_change": float(static["nonlinear_fine_mesh_change"].max()),
+            "nonlinear_load_steps_change": float(static["nonlinear_load_steps_change"].max()),
+            "exudyn_linear_gap_over_peak": float(exudyn_linear_gap.max() / peak_static.max()),
+            "dynamic_peak": float(std.loc["standard", "dynamic_peak"]),
+            "dynamic_error": float(std.loc["standard", "max_error"]),
+            "dynamic_error_over_peak": float(std.loc["standard", "error_over_peak"]),
+            "dynamic_revolutions": int(std.loc["standard", "revolutions"]),
+            "dynamic_periodicity_in": float(std.loc["standard", "periodicity_in"]),
+            "half_step_change": float(std.loc["half step", "change_from_standard"]),
+            "fine_mesh_change": float(std.loc["fine mesh", "change_from_standard"]),
+            "coarse_mesh_change": float(std.loc["coarse mesh", "change_from_standard"]),
+            "start_180_change": float(std.loc["start at 180 deg", "change_from_standard"]),
+            "limit_check_error_over_peak": float(std.loc[f"{LIMIT_CHECK_RPM:g} rpm", "error_over_peak"]),
+            "limit_check_half_step": float(std.loc[f"{LIMIT_CHECK_RPM:g} rpm, half step", "error_over_peak"]),
+            "limit_check_fine_mesh": float(std.loc[f"{LIMIT_CHECK_RPM:g} rpm, fine mesh", "error_over_peak"]),
+            "linear_dynamic_peak_300": float(high.loc[high["rpm"] == RPM, "dynamic_peak"].iloc[0]),
+            "linear_dynamic_peak_300_low": float(low.loc[low["rpm"] == RPM, "dynamic_peak"].iloc[0]),
+            "speed_limit_rpm": crossing(table["rpm"], table["error_over_peak"]),
+            "speed_limit_linear_rpm": crossing(high["rpm"], high["error_over_peak"]),
+            "speed_limit_linear_low_zeta_rpm": crossing(low["rpm"], low["error_over_peak"])}
+
+
+def _limit_words(summary: dict) -> str:
+    limit = summary["speed_limit_rpm"]
+    return (f"{limit:.0f} rpm (a crank frequency of {limit / 60.0:.2f} Hz, 1/{summary['f1_min_hz'] / (limit / 60.0):.0f} "
+            f"of the lowest first natural frequency, {summary['f1_min_hz']:.1f} Hz)")
+
+
+def report(freq, static, convergence, table, summary) -> str:
+    """report.md: for a mechanism designer, what the 1977 method gets right, where it fails, why,
+    and the speed limit that follows; then the measurements."""
+    s = summary
+    low = convergence[convergence["zeta"] == ZETA_LOW]
+    lines = [f"# {TITLE}", "",
+             "## In short", "",
+             f"- **What the 1977 method gets right.** The structure. Exudyn's beam model of the frozen linkage, "
+             f"solved linearly, gives the corrected port's deflection to {s['exudyn_linear_gap_over_peak']:.0e} of "
+             f"the peak, and its natural frequencies to {s['f1_exudyn_over_port_max']:.0e}: the thesis's "
+             "flexibility matrix (eq. 29) is the linear statics of its links. At low speed the full elastodynamic answer is the "
+             f"quasi-static one: within 10 % of the peak deflection up to about {_limit_words(s)}.",
+             f"- **Where it fails: resonance.** The frozen linkage's first natural frequency runs from "
+             f"{s['f1_min_hz']:.1f} to {s['f1_max_hz']:.1f} Hz over the cycle. At the design speed, {RPM:g} rpm, the crank "
+             f"turns at {s['crank_hz']:g} Hz, and the path point's acceleration has strong second and third "
+             f"harmonics: {2 * s['crank_hz']:g} Hz lies inside the first mode's band. The quasi-static method "
+             f"cannot see this. In the steady state at {RPM:g} rpm (damping ratio {ZETA:.0%}) the path point "
+             f"deflects up to {s['dynamic_peak']:.2f} in, against the quasi-static {s['quasi_static_peak']:.2f} in; "
+             f"the quasi-static curve is off by up to {s['dynamic_error']:.2f} in, {s['dynamic_error_over_peak']:.1f} "
+             f"times its own peak. The thesis's own structure with the deflection's inertia kept "
+             f"(small-deflection theory) resonates further, to {s['linear_dynamic_peak_300']:.1f} in; Exudyn's "
+             "beams are geometrically exact, and at these deflections that matters (next point). The steady "
+             f"state is converged: half the step moves it by {s['half_step_change']:.3f} in, twice the mesh by "
+             f"{s['fine_mesh_change']:.3f} in, a start half a revolution later by {s['start_180_change']:.0e} in.",
+             f"- **Where it fails: geometric nonlinearity.** Even as a static problem, the {RPM:g} rpm load "
+             f"deflects the linkage so far ({s['quasi_static_peak']:.1f} in on links of 10-30 in) that the "
+             f"nonlinear solution differs from the linear one by up to {s['nonlinear_gap_max']:.2f} in, "
+             f"{s['nonlinear_gap_over_peak']:.0%} of the peak (twice the mesh moves it by at most "
+             f"{s['nonlinear_fine_mesh_change']:.0e} in, twice the load steps by {s['nonlinear_load_steps_change']:.0e} in). "
+             "The linkage stiffens as it deflects: the nonlinear peak is the smaller.",
+             f"- **The speed limit.** With the 10 % criterion, the quasi-static K.E.D. answer holds up to about "
+             f"{s['speed_limit_rpm']:.0f} rpm in Exudyn ({s['speed_limit_linear_rpm']:.0f} rpm for the thesis's "
+             f"structure run dynamically; {s['speed_limit_linear_low_zeta_rpm']:.0f} rpm with {ZETA_LOW:.0%} "
+             f"damping): about a fifth of the design speed. At {LIMIT_CHECK_RPM:g} rpm the error is "
+             f"{s['limit_check_error_over_peak']:.3f} of the peak ({s['limit_check_half_step']:.3f} with half the "
+             f"step, {s['limit_check_fine_mesh']:.3f} with twice the mesh). Below the limit the error grows as the "
+             "speed squared "
+             "(the low harmonics' dynamic amplification, (n f_crank / f1)^2); above it the harmonics of the "
+             "crank pass through the first mode one after another and the error jumps from resonance to "
+             f"resonance (at {RPM:g} rpm, the second harmonic). A designer who wants the 1977 method to hold "
+             "keeps the frozen linkage's first natural frequency above about ten times the crank frequency.",
+             f"- **Less damping.** At {ZETA_LOW:.0%} damping and {RPM:g} rpm: " + "; ".join(
+                 f"{r.study} ({r.steps_per_rev} steps per revolution): "
+                 + (f"Exudyn's Newton iteration diverged {r.newton_diverged_at_s:.3f} s after the start "
+                    f"({r.newton_diverged_at_s * RPM / 60.0:.2f} revolutions)" if not math.isnan(r.newton_diverged_at_s)
+                    else f"peak {r.dynamic_peak:.2f} in, " + ("steady" if r.period == 1 else "period 2 revolutions"
+                                                              if r.period == 2 else "no steady state"))
+                 for r in low.itertuples())
+             + f". The start-up transient at {RPM:g} rpm is larger there, and the model does not get through it; "
+             f"the thesis's structure run dynamically at {ZETA_LOW:.0%} peaks at {s['linear_dynamic_peak_300_low']:.1f} in. "
+             f"The {ZETA:.0%} runs are the ones this page's numbers come from.",
+             "", "## The model", "", __doc__.split("\n\n", 1)[1].rsplit("\n\nUnits", 1)[0].strip(), "",
+             f"Exudyn {multibody.version()}: {ELEMENTS} ObjectBeamGeometricallyExact2D elements per link (shear "
+             f"stiffness {SHEAR_PER_ELEMENT:g} x 12 EI / h^2 per element), generalized-alpha (spectral radius {SPECTRAL_RADIUS}), Newton to a "
+             f"relative {NEWTON_TOLERANCE:g}, {STEPS_PER_REV} steps per revolution (360 ceil(120/rpm) below 120 rpm); "
+             f"a steady state when two successive revolutions agree to {PERIODICITY_IN:g} in (at most "
+             f"{MAX_REVOLUTIONS}). The runs start undeformed with the rigid linkage's velocities.",
+             "", f"## The {RPM:g} rpm steady state and its checks", "",
+             "| run | elements | steps/rev | zeta | start (deg) | revolutions | period | last two revs differ (in) | "
+             "dynamic peak (in) | quasi-static error (in) | error / quasi-static peak | change from the standard run (in) |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    lines += [f"| {r.study} | {r.elements} | {r.steps_per_rev} | {r.zeta:g} | {r.start_deg:g} | {r.revolutions} | "
+              f"{r.period or 'none'} | {r.periodicity_in:.1e} | {r.dynamic_peak:.4f} | {r.max_error:.4f} | "
+              f"{r.error_over_peak:.3f} | {'' if math.isnan(r.change_from_standard) else f'{r.change_from_standard:.2e}'} |"
+              for r in convergence.itertuples()]
+    lines += ["", f"## The speed sweep (Exudyn, zeta {ZETA:g})", "",
+              "| rpm | steps/rev | revolutions | last two revs differ (in) | quasi-static peak (in) | dynamic peak (in) | "
+              "error / peak | thesis's structure, dynamic: error / peak |", "|---|---|---|---|---|---|---|---|"]
+    lines += [f"| {r.rpm:g} | {r.steps_per_rev} | {r.revolutions} | {r.periodicity_in:.1e} | {r.quasi_static_peak:.4f} | "
+              f"{r.dynamic_peak:.4f} | {r.error_over_peak:.3f} | {r.linear_error_over_peak:.3f} |"
+              for r in table.itertuples()]
+    lines += ["", "## The frozen linkage's natural frequencies", "",
+              f"First mode {s['f1_min_hz']:.2f}-{s['f1_max_hz']:.2f} Hz, second {s['f2_min_hz']:.1f}-{s['f2_max_hz']:.0f} Hz "
+              f"over the cycle (the port's structure, every degree); Exudyn's ({ELEMENTS} elements per link, its "
+              "Jacobian condensed onto the path point: exact for massless links) within "
+              f"{s['f1_exudyn_over_port_max']:.0e} ({s['f1_exudyn_fine_over_port_max']:.0e} with {2 * ELEMENTS}). "
+              f"The drive's harmonics at {RPM:g} rpm: {s['crank_hz']:g}, {2 * s['crank_hz']:g}, {3 * s['crank_hz']:g} Hz.",
+              "", "![frequencies and speed sweep](elastodynamics.png)", "", "![the 300 rpm cycle](cycle.png)", ""]
+    return "\n".join(lines)
+
+
+def overview(summary: dict) -> list[str]:
+    s = summary
+    return [f"frozen linkage's first mode {s['f1_min_hz']:.1f}-{s['f1_max_hz']:.1f} Hz; {RPM:g} rpm's second harmonic "
+            f"{2 * s['crank_hz']:g} Hz",
+            f"{RPM:g} rpm steady state (zeta {ZETA:g}): peak {s['dynamic_peak']:.2f} in against the quasi-static "
+            f"{s['quasi_static_peak']:.2f} in, off by up to {s['dynamic_error']:.2f} in; nonlinear statics off by "
+            f"{s['nonlinear_gap_over_peak']:.0%} of the peak",
+            f"the quasi-static answer within 10 % of its peak up to {s['speed_limit_rpm']:.0f} rpm"]
+
+
+def plot_overview(freq, freq_port, table, linear, summary, path: Path) -> None:
+    """Left: the frozen linkage's two natural frequencies (Hz) against the crank angle, with the
+    300 rpm drive's first three harmonics; right: the quasi-static answer's error over its peak
+    against the speed, Exudyn and the thesis's structure run dynamically."""
+    from ...figures import save
+    from ...report import panel_grid, top_legend
+    fig, margins = panel_grid(11.0, 2, 1, 3.4, TITLE, legend_rows=3, gap_across=0.9)
+    left, right = fig.subplots(1, 2)
+    handles = {}
+    handles["first mode (the port)"], = left.plot(freq_port["crank_deg"], freq_port["f1_port"],
+                                                              color="tab:blue", lw=1.6)
+    handles["second mode (the port)"], = left.plot(freq_port["crank_deg"], freq_port["f2_port"],
+                                                               color="tab:blue", lw=1.2, ls="--")
+    handles[f"Exudyn, {ELEMENTS} elements/link"], = left.plot(
+        np.r_[freq["crank_deg"], freq["crank_deg"]], np.r_[freq["f1_exudyn"], freq["f2_exudyn"]], "o",
+        color="k", ms=3.5, mfc="none")
+    for n, style in zip((1, 2, 3), (":", "-.", (0, (6, 2)))):
+        handles[f"{n} x crank at {RPM:g} rpm"] = left.axhline(n * summary["crank_hz"], color="tab:red", lw=1.1, ls=style)
+    left.set_ylim(0.0, 30.0)
+    left.set_xlim(0.0, 360.0)
+    left.set_xticks(np.arange(0.0, 361.0, 60.0))
+    left.set_xlabel("crank angle (deg)")
+    left.set_ylabel("natural frequency (Hz)")
+    left.set_title("the frozen linkage's natural frequencies")
+    high, low = (linear[linear["zeta"] == z] for z in (ZETA, ZETA_LOW))
+    handles[f"Exudyn, zeta {ZETA:g}"], = right.semilogy(table["rpm"], table["error_over_peak"], "s",
+                                                                    color="k", ms=4)
+    handles[f"thesis's structure, zeta {ZETA:g}"], = right.semilogy(high["rpm"], high["error_over_peak"],
+                                                                                color="tab:green", lw=1.4)
+    handles[f"thesis's structure, zeta {ZETA_LOW:g}"], = right.semilogy(low["rpm"], low["error_over_peak"], color="tab:orange",
+                                                              lw=1.0, ls="--")
+    handles["10 % of the peak"] = right.axhline(ERROR_LEVEL, color="tab:red", lw=1.0)
+    right.axvline(summary["speed_limit_rpm"], color="tab:red", lw=1.0, ls=":")
+    right.set_xlabel("crank speed (rev/min)")
+    right.set_ylabel("quasi-static error / its peak deflection")
+    right.set_title("the quasi-static answer's error over the speed")
+    right.set_xlim(0.0, 410.0)
+    for ax in (left, right):
+        ax.grid(alpha=0.3, which="both")
+    top_legend(fig, handles, rows=3)
+    caption = (f"Left: the two natural frequencies of the path-point mass on the frozen linkage (Case I: massless links) "
+               f"over the crank angle, from the corrected port's flexibility (line) and Exudyn's beam model (circles, every "
+               f"10 deg); the first mode runs from {summary['f1_min_hz']:.2f} to {summary['f1_max_hz']:.2f} Hz, the second "
+               f"from {summary['f2_min_hz']:.1f} Hz up to {summary['f2_max_hz']:.0f} Hz (cut off at 30 Hz); the red lines are "
+               f"the first three harmonics of the crank at {RPM:g} rpm. Right: the largest distance between the "
+               f"elastodynamic steady state and the quasi-static deflection over a revolution, divided by the peak "
+               f"quasi-static deflection, against the crank speed: Exudyn (squares) and the thesis's structure with the "
+               f"deflection's inertia kept (lines). It passes 10 % at {summary['speed_limit_rpm']:.0f} rpm (dotted) in "
+               f"Exudyn.")
+    save(fig, path, caption, **margins)
+
+
+def plot_cycle(cycle, static, convergence, summary, path: Path) -> None:
+    """The path point's deflection dx, dy (in) over the crank angle at 300 rpm: quasi-static
+    (the port), nonlinear static, the steady state (Exudyn), the thesis's structure run
+    dynamically."""
+    from ...figures import save
+    from ...report import panel_grid, top_legend
+    fig, margins = panel_grid(11.0, 2, 1, 3.2, f"The path point's deflection over a revolution at {RPM:g} rpm",
+                              legend_rows=2, gap_across=0.9)
+    axes = fig.subplots(1, 2, sharex=True)
+    handles = {}
+    for ax, c in zip(axes, ("dx", "dy")):
+        handles["quasi-static (the corrected port)"], = ax.plot(cycle["crank_deg"], cycle[f"quasi_static_{c}"],
+                                                                color="tab:blue", lw=1.8)
+        handles["nonlinear static, same load (Exudyn)"], = ax.plot(static["crank_deg"], static[f"nonlinear_{c}"], "o",
+                                                                   color="tab:purple", ms=3.5, mfc="none")
+        handles[f"steady state, zeta {ZETA:g} (Exudyn)"], = ax.plot(cycle["crank_deg"], cycle[f"dynamic_{c}"],
+                                                                    color="k", lw=1.4)
+        handles[f"the thesis's structure, dynamic, zeta {ZETA:g}"], = ax.plot(
+            cycle["crank_deg"], cycle[f"linear_dynamic_{c}"], color="tab:green", lw=1.0, ls="--")
+        ax.set_xlabel("crank angle (deg)")
+        ax.set_ylabel(f"{c} (in)")
+        ax.set_title(f"{c}, the path point's deflection along {'x' if c == 'dx' else 'y'}")
+        ax.set_xlim(0.0, 360.0)
+        ax.set_xticks(np.arange(0.0, 361.0, 60.0))
+        ax.grid(alpha=0.3)
+    top_legend(fig, handles, rows=2)
+    caption = (f"The path point's elastic deflection at {RPM:g} rpm (Case I source four-bar) over one revolution: "
+               f"the quasi-static K.E.D. answer (peak {summary['quasi_static_peak']:.2f} in), the same load solved "
+               f"geometrically nonlinearly in Exudyn (circles, up to {summary['nonlinear_gap_max']:.2f} in from it), "
+               f"the elastodynamic steady state in Exudyn (peak {summary['dynamic_peak']:.2f} in, "
+               f"{summary['dynamic_revolutions']} revolutions from an undeformed start, the last two differing by "
+               f"{summary['dynamic_periodicity_in']:.0e} in), and the thesis's linear structure with the deflection's "
+               f"inertia kept, which resonates (peak {summary['linear_dynamic_peak_300']:.1f} in).")
+    save(fig, path, caption, **margins)
+
+
+SCENE = ReportScene(name=NAME, title=TITLE, group=GROUP, start=START, produce=run, overview=overview)
