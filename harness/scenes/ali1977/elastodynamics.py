@@ -300,7 +300,8 @@ def _steady_state(rpm: float, elements: int, steps: int, zeta: float, start_deg:
     settings.show.statistics = False
     settings.show.computationTime = False
     deg = start_deg + np.arange(steps) * 360.0 / steps
-    exu.SetWriteToConsole(False)          # a diverged run is a result here (``failed_at``), not a console message
+    printing = exu.config.printToConsole
+    exu.config.printToConsole = False     # a diverged run is a result here (``failed_at``), not a console message
     try:
         mbs.SolveDynamic(settings)
     except exu.SolverError:
@@ -308,7 +309,7 @@ def _steady_state(rpm: float, elements: int, steps: int, zeta: float, start_deg:
         return SteadyState(rpm, elements, steps, zeta, start_deg, deg, nan, len(positions) // steps, math.nan, math.nan,
                            0, (len(positions) - 1) * period_s / steps)
     finally:
-        exu.SetWriteToConsole(True)
+        exu.config.printToConsole = printing
     n = (len(positions) - 1) // steps * steps
     last = np.asarray(positions[n - steps:n]) - rigid_path_point(deg, rpm)
     one, two = found["diffs"]
