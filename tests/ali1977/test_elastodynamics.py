@@ -25,6 +25,7 @@ import pytest  # noqa: E402
 from linkrepro.harness.scenes.ali1977 import elastodynamics as ed  # noqa: E402
 from linkrepro.harness.scenes.ali1977 import multibody as mb  # noqa: E402
 from linkrepro.port.ali1977.case1 import source_case1, source_mechanics  # noqa: E402
+from linkrepro.port.ali1977.cognate import cognate_mechanics  # noqa: E402
 from linkrepro.port.ali1977.data import EXAMPLE  # noqa: E402
 from linkrepro.port.ali1977.quirks import CORRECTED  # noqa: E402
 from linkrepro.port.ali1977.structure import GRAVITY_IN, flexibility  # noqa: E402
@@ -54,14 +55,17 @@ def _decay(signal: np.ndarray, step: float) -> tuple[float, float]:
     return frequency, decrement / math.sqrt(4.0 * math.pi ** 2 + decrement ** 2)
 
 
-@pytest.mark.parametrize("deg", [0.0, 20.0, 200.0])
-def test_frozen_frequencies_are_those_of_the_thesis_flexibility(deg):
+@pytest.mark.parametrize("side, deg", [("source", 0.0), ("source", 20.0), ("source", 200.0), ("cognate", 20.0),
+                                       ("cognate", 200.0)])
+def test_frozen_frequencies_are_those_of_the_thesis_flexibility(side, deg):
     """Exudyn's stiffness at the path point (its Jacobian condensed, 2 elements per link) gives the
     frequencies of the mass on the port's compliance beta^T F beta, to rounding: the thesis's
-    eq. (29) is the linear statics of Euler-Bernoulli links."""
-    stiffness, check = ed.exudyn_stiffness(deg, elements=2)
+    eq. (29) is the linear statics of Euler-Bernoulli links (source and cognate; frequencies do
+    not depend on the frame)."""
+    stiffness, check = ed.exudyn_stiffness(deg, elements=2, side=side)
     assert check < 1e-9
-    mech = source_mechanics(np.array([deg]), quirks=CORRECTED)
+    mechanics = source_mechanics if side == "source" else cognate_mechanics
+    mech = mechanics(np.array([deg]), quirks=CORRECTED)
     flex = flexibility(*mech.flex_lengths, EXAMPLE.section, CORRECTED)
     compliance = (mech.beta[0].T @ flex @ mech.beta[0])[:2, :2]
     mass = EXAMPLE.mass_lbf / GRAVITY_IN

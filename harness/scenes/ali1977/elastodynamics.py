@@ -44,7 +44,8 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from ....port.ali1977.case1 import source_case1, source_mechanics
+from ....port.ali1977.case1 import cognate_case1, source_case1, source_mechanics
+from ....port.ali1977.cognate import cognate_mechanics
 from ....port.ali1977.case2 import DENSITY
 from ....port.ali1977.data import EXAMPLE
 from ....port.ali1977.quirks import CORRECTED
@@ -58,7 +59,8 @@ TITLE = "Ali (1977): the quasi-static K.E.D. deflections against the four-bar's 
 GROUP = NAME
 #: the longest scene: it starts first
 START = 0
-SIDE, CASE = "source", 1
+#: the source four-bar and its crossed cognate (the same path point, other links)
+SIDES, CASE = ("source", "cognate"), 1
 #: the design speed, rev/min
 RPM = 300.0
 #: the path point's mass, lbf s^2/in
@@ -90,12 +92,17 @@ SPECTRAL_RADIUS = 0.8
 NEWTON_TOLERANCE = 1e-6
 #: the frozen structure's frequencies: every 10 deg in Exudyn (the port: every degree)
 FREQUENCY_ANGLES = np.arange(0.0, 360.0, 10.0)
-#: the nonlinear static solve: every 10 deg
+#: the nonlinear static solve: every 10 deg, in LOAD_STEPS load steps (measured: 1 to 10 agree to
+#: Newton's tolerance); twice the mesh and twice the load steps every 30 deg
 STATIC_ANGLES = np.arange(0.0, 360.0, 10.0)
+LOAD_STEPS = 4
+STATIC_CHECK_EVERY = 3
 #: the speed sweep in Exudyn, rev/min; the linear dynamics of the thesis's structure every rev/min
 SWEEP_RPM = (30.0, 40.0, 50.0, 55.0, 60.0, 65.0, 70.0, 80.0, 90.0, 100.0, 120.0, 150.0, 200.0, 250.0, 300.0,
              350.0, 400.0)
 LINEAR_RPM = np.arange(20.0, 401.0, 1.0)
+#: the cognate's sweep in Exudyn (fewer speeds: the cost)
+COGNATE_SWEEP_RPM = (40.0, 50.0, 60.0, 70.0, 80.0, 100.0, 150.0, 200.0, 300.0, 400.0)
 LINEAR_STEPS = 720
 #: the quasi-static answer's error, as a fraction of its peak deflection, that sets the speed limit
 ERROR_LEVEL = 0.10
@@ -121,13 +128,27 @@ def steps_per_rev(rpm: float) -> int:
 
 # --- the thesis's structure (the corrected port) ---------------------------------------------------
 
-def port_stiffness(deg) -> np.ndarray:
-    """The path point's 2x2 stiffness (lbf/in) over ``deg``: the inverse of the x, y block of the
-    port's compliance beta^T F beta (eq. 6, corrected; no load on the rotation, as Case I)."""
-    mech = source_mechanics(np.asarray(deg, dtype=float), quirks=CORRECTED)
+def _mechanics(deg, side: str, rpm: float = RPM):
+    """The corrected port's Mechanics of ``side`` over ``deg`` (its own frame) and the rotation
+    (2x2) that turns its own frame into the source's (D025's turn; the identity for the source)."""
+    deg = np.asarray(deg, dtype=float)
+    if side == "source":
+        return source_mechanics(deg, rpm=rpm, quirks=CORRECTED), np.eye(2)
+    if side != "cognate":
+        raise ValueError(f"side must be one of {SIDES}, got {side!r}")
+    mech = cognate_mechanics(deg, rpm=rpm, quirks=CORRECTED)
+    c, s = math.cos(mech.frame_angle), math.sin(mech.frame_angle)
+    return mech, np.array([[c, -s], [s, c]])
+
+
+def port_stiffness(deg, side: str = "source") -> np.ndarray:
+    """The path point's 2x2 stiffness (lbf/in, source frame) over ``deg``: the inverse of the x, y
+    block of the port's compliance beta^T F beta (eq. 6, corrected; no load on the rotation, as
+    Case I)."""
+    mech, turn = _mechanics(deg, side)
     flex = flexibility(*mech.flex_lengths, EXAMPLE.section, CORRECTED)
     compliance = np.swapaxes(mech.beta, -1, -2) @ flex @ mech.beta
-    return np.linalg.inv(compliance[:, :2, :2])
+    return turn @ np.linalg.inv(compliance[:, :2, :2]) @ turn.T
 
 
 def frequencies_of(stiffness: np.ndarray) -> np.ndarray:
@@ -135,19 +156,24 @@ def frequencies_of(stiffness: np.ndarray) -> np.ndarray:
     return np.sqrt(np.linalg.eigvalsh(stiffness / MASS)) / (2.0 * math.pi)
 
 
-def quasi_static(deg, rpm: float) -> np.ndarray:
-    """The corrected port's Case I deflection (dx, dy) (N, 2), in, at ``rpm``."""
-    out = source_case1(np.asarray(deg, dtype=float), rpm=rpm, quirks=CORRECTED)
+def _case1(deg, rpm: float, side: str) -> dict:
+    call = source_case1 if side == "source" else cognate_case1
+    return call(np.asarray(deg, dtype=float), rpm=rpm, quirks=CORRECTED)
+
+
+def quasi_static(deg, rpm: float, side: str = "source") -> np.ndarray:
+    """The corrected port's Case I deflection (dx, dy) (N, 2), in, source frame, at ``rpm``."""
+    out = _case1(deg, rpm, side)
     return np.column_stack([out["dx"], out["dy"]])
 
 
-def rigid_path_point(deg, rpm: float = RPM) -> np.ndarray:
-    """The rigid path point (x, y) (N, 2), in, from the corrected port."""
-    out = source_case1(np.asarray(deg, dtype=float), rpm=rpm, quirks=CORRECTED)
-    return np.column_stack([out["xp"], out["yp"]])
+def rigid_path_point(deg, rpm: float = RPM, side: str = "source") -> np.ndarray:
+    """The rigid path point (x, y) (N, 2), in, source frame, from the corrected port."""
+    out = _case1(deg, rpm, side)
+    return np.column_stack([out["xp"], out["yp"]] if side == "source" else [out["cxp"], out["cyp"]])
 
 
-def linear_periodic(rpms, zeta: float, steps: int = LINEAR_STEPS) -> tuple[np.ndarray, np.ndarray]:
+def linear_periodic(rpms, zeta: float, steps: int = LINEAR_STEPS, side: str = "source") -> tuple[np.ndarray, np.ndarray]:
     """The thesis's structure run dynamically: m u'' + beta K u' + K u = -m a over a revolution at
     each of ``rpms`` (S,), K = ``port_stiffness``, a the port's rigid acceleration, beta =
     ``damping_beta(zeta)``; the trapezoidal rule (Newmark's average acceleration) in ``steps``
@@ -156,8 +182,8 @@ def linear_periodic(rpms, zeta: float, steps: int = LINEAR_STEPS) -> tuple[np.nd
     radius (S,): how fast a start-up transient dies per revolution)."""
     rpms = np.atleast_1d(np.asarray(rpms, dtype=float))
     deg = np.arange(steps) * 360.0 / steps
-    stiffness = port_stiffness(deg)
-    load = np.stack([-MASS * source_mechanics(deg, rpm=r, quirks=CORRECTED).acc for r in rpms])   # (S, N, 2)
+    stiffness = port_stiffness(deg, side)
+    load = np.stack([-MASS * (lambda mech, turn: mech.acc @ turn.T)(*_mechanics(deg, side, r)) for r in rpms])  # (S, N, 2)
     beta, eye = damping_beta(zeta), np.eye(2)
     h = (60.0 / rpms / steps)[:, None, None]
     maps, phi, g = [], np.broadcast_to(np.eye(4), (len(rpms), 4, 4)).copy(), np.zeros((len(rpms), 4))
@@ -201,13 +227,13 @@ def _jacobian(model) -> np.ndarray:
     return jacobian
 
 
-def exudyn_stiffness(deg: float, elements: int = ELEMENTS) -> tuple[np.ndarray, float]:
+def exudyn_stiffness(deg: float, elements: int = ELEMENTS, side: str = "source") -> tuple[np.ndarray, float]:
     """The frozen structure's stiffness at the path point (2x2, lbf/in) in Exudyn: its Jacobian
     condensed onto the path point's x, y (the links are massless, so this is exact for the
     frequencies); and, as a check of the condensation, the largest difference (in) between the
     compliance times the Case I load and the builder's own linear deflection under it."""
     mb = _mb()
-    model = mb.build(SIDE, float(deg), CASE, elements, masses="none", shear_per_element=SHEAR_PER_ELEMENT)
+    model = mb.build(side, float(deg), CASE, elements, masses="none", shear_per_element=SHEAR_PER_ELEMENT)
     jacobian = _jacobian(model)
     index = model.mbs.GetNodeODE2Index(model.path_node)
     unit = np.zeros((len(jacobian), 2))
@@ -220,12 +246,13 @@ def exudyn_stiffness(deg: float, elements: int = ELEMENTS) -> tuple[np.ndarray, 
     return np.linalg.inv(compliance), check
 
 
-def exudyn_static(deg: float, elements: int = ELEMENTS, load_steps: int = 10) -> tuple[np.ndarray, np.ndarray]:
+def exudyn_static(deg: float, elements: int = ELEMENTS, load_steps: int = LOAD_STEPS,
+                  side: str = "source") -> tuple[np.ndarray, np.ndarray]:
     """The path point's deflection (dx, dy), in, under the Case I load at ``deg`` (300 rpm):
     Exudyn's linear answer and its geometrically nonlinear static solve (``load_steps`` load
     steps, Newton to NEWTON_TOLERANCE)."""
     mb = _mb()
-    model = mb.build(SIDE, float(deg), CASE, elements, masses="none", shear_per_element=SHEAR_PER_ELEMENT)
+    model = mb.build(side, float(deg), CASE, elements, masses="none", shear_per_element=SHEAR_PER_ELEMENT)
     linear = model.linear_deflection()[:2]
     settings = model.settings
     settings.staticSolver.numberOfLoadSteps = load_steps
@@ -255,27 +282,29 @@ class SteadyState:
     period: int
     failed_at: float = math.nan
     link_mass: float = 0.0
+    side: str = "source"
 
 
 def steady_state(rpm: float, elements: int = ELEMENTS, steps: int | None = None, zeta: float = ZETA,
-                 start_deg: float = 0.0, link_mass: float = 0.0) -> SteadyState:
+                 start_deg: float = 0.0, link_mass: float = 0.0, side: str = "source") -> SteadyState:
     """``_steady_state``, each run once per process (the sweep and the checks share runs)."""
     return _steady_state(float(rpm), int(elements), int(steps or steps_per_rev(rpm)), float(zeta), float(start_deg),
-                         float(link_mass))
+                         float(link_mass), side)
 
 
 @functools.lru_cache(maxsize=64)
 def _steady_state(rpm: float, elements: int, steps: int, zeta: float, start_deg: float,
-                  link_mass: float) -> SteadyState:
+                  link_mass: float, side: str) -> SteadyState:
     """The elastodynamic steady state at ``rpm``: the builder's driven linkage (started at
     ``start_deg`` with the rigid linkage's velocities, undeformed), the beams damped
     (``damping_beta(zeta)``), the crank speed set to ``rpm``; Exudyn's generalized-alpha in
     ``steps`` steps per revolution, revolution after revolution until two successive ones (or,
     a period-2 motion, the last and the one two before) agree to PERIODICITY_IN.  ``link_mass``:
-    the beams' mass as a fraction of the links' own (0: Case I's massless links)."""
+    the beams' mass as a fraction of the links' own (0: Case I's massless links); ``side`` the
+    source four-bar or its cognate."""
     exu = multibody.require()
     mb = _mb()
-    model = mb.build(SIDE, float(start_deg), CASE, elements, mode="driven", shear_per_element=SHEAR_PER_ELEMENT)
+    model = mb.build(side, float(start_deg), CASE, elements, mode="driven", shear_per_element=SHEAR_PER_ELEMENT)
     _damp(model, damping_beta(zeta))
     if link_mass:
         _give_mass(model, link_mass)
@@ -319,14 +348,14 @@ def _steady_state(rpm: float, elements: int, steps: int, zeta: float, start_deg:
     except exu.SolverError:
         nan = np.full((steps, 2), math.nan)
         return SteadyState(rpm, elements, steps, zeta, start_deg, deg, nan, len(positions) // steps, math.nan, math.nan,
-                           0, (len(positions) - 1) * period_s / steps, link_mass)
+                           0, (len(positions) - 1) * period_s / steps, link_mass, side)
     finally:
         exu.config.printToConsole = printing
     n = (len(positions) - 1) // steps * steps
-    last = np.asarray(positions[n - steps:n]) - rigid_path_point(deg, rpm)
+    last = np.asarray(positions[n - steps:n]) - rigid_path_point(deg, rpm, side)
     one, two = found["diffs"]
     return SteadyState(rpm, elements, steps, zeta, start_deg, deg, last, n // steps, one, two, found["period"],
-                       link_mass=link_mass)
+                       link_mass=link_mass, side=side)
 
 
 def _damp(model, beta: float) -> None:
@@ -356,7 +385,7 @@ def _set_speed(model, rpm: float) -> None:
     velocities and its crank drive scaled by rpm / 300 (at constant crank speed every rigid
     velocity is proportional to it).  (The builder has no speed: added here to its model.)"""
     mbs, scale = model.mbs, rpm / EXAMPLE.rpm
-    if not math.isclose(model.rigid.om2, 2.0 * math.pi * EXAMPLE.rpm / 60.0, rel_tol=1e-12):
+    if not math.isclose(model.rigid.om2, 2.0 * math.pi * EXAMPLE.rpm / 60.0, rel_tol=1e-12):   # the input's speed
         raise ValueError(f"the builder's crank speed {model.rigid.om2} rad/s is not the example's {EXAMPLE.rpm} rpm")
     for node in range(mbs.systemData.NumberOfNodes()):
         data = mbs.GetNode(node)
@@ -387,36 +416,41 @@ def crossing(rpm, ratio, level: float = ERROR_LEVEL) -> float:
 
 
 def frequencies() -> tuple[pd.DataFrame, pd.DataFrame]:
-    """The frozen structure's two natural frequencies: Exudyn at FREQUENCY_ANGLES (ELEMENTS and
-    2 ELEMENTS per link), the port's structure at every degree."""
-    rows = []
-    for deg in FREQUENCY_ANGLES:
-        k8, check = exudyn_stiffness(deg, ELEMENTS)
-        k16, _ = exudyn_stiffness(deg, 2 * ELEMENTS)
-        (f1, f2), (g1, g2) = frequencies_of(k8), frequencies_of(k16)
-        (p1, p2) = frequencies_of(port_stiffness([deg])[0])
-        rows.append({"crank_deg": deg, "f1_exudyn": f1, "f2_exudyn": f2, "f1_exudyn_fine": g1, "f2_exudyn_fine": g2,
-                     "f1_port": p1, "f2_port": p2, "condensation_check_in": check})
+    """The frozen structure's two natural frequencies, per side: Exudyn at FREQUENCY_ANGLES
+    (ELEMENTS and 2 ELEMENTS per link), the port's structure at every degree."""
+    rows, port_rows = [], []
     deg = np.arange(0.0, 360.0, 1.0)
-    port = frequencies_of(port_stiffness(deg))
-    return pd.DataFrame(rows), pd.DataFrame({"crank_deg": deg, "f1_port": port[:, 0], "f2_port": port[:, 1]})
+    for side in SIDES:
+        for angle in FREQUENCY_ANGLES:
+            k8, check = exudyn_stiffness(angle, ELEMENTS, side)
+            k16, _ = exudyn_stiffness(angle, 2 * ELEMENTS, side)
+            (f1, f2), (g1, g2) = frequencies_of(k8), frequencies_of(k16)
+            (p1, p2) = frequencies_of(port_stiffness([angle], side)[0])
+            rows.append({"side": side, "crank_deg": angle, "f1_exudyn": f1, "f2_exudyn": f2, "f1_exudyn_fine": g1,
+                         "f2_exudyn_fine": g2, "f1_port": p1, "f2_port": p2, "condensation_check_in": check})
+        port = frequencies_of(port_stiffness(deg, side))
+        port_rows.append(pd.DataFrame({"side": side, "crank_deg": deg, "f1_port": port[:, 0], "f2_port": port[:, 1]}))
+    return pd.DataFrame(rows), pd.concat(port_rows, ignore_index=True)
 
 
 def statics() -> pd.DataFrame:
-    """At STATIC_ANGLES, the 300 rpm Case I load: the port's deflection, Exudyn's linear and
-    nonlinear ones (dx, dy, in), the nonlinear one also on twice the mesh and in twice the load
-    steps."""
-    port = quasi_static(STATIC_ANGLES, RPM)
+    """At STATIC_ANGLES, per side, the 300 rpm Case I load: the port's deflection, Exudyn's linear
+    and nonlinear ones (dx, dy, in), the nonlinear one also on twice the mesh and in twice the load
+    steps (every STATIC_CHECK_EVERY-th angle; NaN elsewhere)."""
     rows = []
-    for k, deg in enumerate(STATIC_ANGLES):
-        linear, nonlinear = exudyn_static(deg)
-        _, fine = exudyn_static(deg, 2 * ELEMENTS)
-        _, stepped = exudyn_static(deg, load_steps=20)
-        rows.append({"crank_deg": deg, "port_dx": port[k, 0], "port_dy": port[k, 1],
-                     "exudyn_linear_dx": linear[0], "exudyn_linear_dy": linear[1],
-                     "nonlinear_dx": nonlinear[0], "nonlinear_dy": nonlinear[1],
-                     "nonlinear_fine_mesh_change": float(np.hypot(*(fine - nonlinear))),
-                     "nonlinear_load_steps_change": float(np.hypot(*(stepped - nonlinear)))})
+    for side in SIDES:
+        port = quasi_static(STATIC_ANGLES, RPM, side)
+        for k, deg in enumerate(STATIC_ANGLES):
+            linear, nonlinear = exudyn_static(deg, side=side)
+            fine = stepped = np.full(2, math.nan)
+            if k % STATIC_CHECK_EVERY == 0:
+                _, fine = exudyn_static(deg, 2 * ELEMENTS, side=side)
+                _, stepped = exudyn_static(deg, load_steps=2 * LOAD_STEPS, side=side)
+            rows.append({"side": side, "crank_deg": deg, "port_dx": port[k, 0], "port_dy": port[k, 1],
+                         "exudyn_linear_dx": linear[0], "exudyn_linear_dy": linear[1],
+                         "nonlinear_dx": nonlinear[0], "nonlinear_dy": nonlinear[1],
+                         "nonlinear_fine_mesh_change": float(np.hypot(*(fine - nonlinear))),
+                         "nonlinear_load_steps_change": float(np.hypot(*(stepped - nonlinear)))})
     return pd.DataFrame(rows)
 
 
@@ -433,10 +467,10 @@ def orbit_change(a: SteadyState, b: SteadyState) -> float:
 
 
 def _row(kind: str, run: SteadyState, reference: tuple[str, SteadyState] | None) -> dict:
-    qs = quasi_static(run.deg, run.rpm)
+    qs = quasi_static(run.deg, run.rpm, run.side)
     peak_qs, peak, error = error_of(run.deflection, qs)
     change = math.nan if reference is None else orbit_change(run, reference[1])
-    return {"study": kind, "rpm": run.rpm, "elements": run.elements, "steps_per_rev": run.steps, "zeta": run.zeta,
+    return {"side": run.side, "study": kind, "rpm": run.rpm, "elements": run.elements, "steps_per_rev": run.steps, "zeta": run.zeta,
             "start_deg": run.start_deg, "revolutions": run.revolutions, "period": run.period,
             "periodicity_in": run.periodicity, "period2_in": run.period2, "quasi_static_peak": peak_qs,
             "dynamic_peak": peak, "max_error": error, "error_over_peak": error / peak_qs,
@@ -444,12 +478,12 @@ def _row(kind: str, run: SteadyState, reference: tuple[str, SteadyState] | None)
             "change": change, "newton_diverged_at_s": run.failed_at}
 
 
-def study_300() -> tuple[SteadyState, pd.DataFrame]:
+def study_300() -> tuple[SteadyState, SteadyState, pd.DataFrame]:
     """The 300 rpm steady state (ELEMENTS, STEPS_PER_REV, ZETA, from 0 deg) and its checks: half
     the step, half and twice the mesh's element length, another start, the links given
     REGULARIZING_MASS of their mass; the lower damping ZETA_LOW, massless and with that mass (and
     then half the step and another start); at LIMIT_CHECK_RPM, near the speed limit, half the step
-    and twice the mesh."""
+    and twice the mesh; the cognate's steady state, with half the step and twice the mesh."""
     progress.note(NAME, "300 rpm steady state")
     standard = steady_state(RPM)
     low_name, low = LOW_NAME, None
@@ -475,38 +509,47 @@ def study_300() -> tuple[SteadyState, pd.DataFrame]:
                          ("fine mesh", dict(elements=2 * ELEMENTS))):
         progress.note(NAME, f"{LIMIT_CHECK_RPM:g} rpm: {kind}")
         rows.append(_row(f"{near_name}, {kind}", steady_state(LIMIT_CHECK_RPM, **kwargs), (near_name, near)))
-    return standard, pd.DataFrame(rows)
+    progress.note(NAME, "300 rpm: the cognate")
+    cognate = steady_state(RPM, side="cognate")
+    rows.append(_row("standard", cognate, None))
+    for kind, kwargs in (("half step", dict(steps=2 * STEPS_PER_REV)), ("fine mesh", dict(elements=2 * ELEMENTS))):
+        progress.note(NAME, f"300 rpm, the cognate: {kind}")
+        rows.append(_row(kind, steady_state(RPM, side="cognate", **kwargs), ("standard", cognate)))
+    return standard, cognate, pd.DataFrame(rows)
 
 
 def sweep() -> pd.DataFrame:
-    """Exudyn's steady state at SWEEP_RPM (ELEMENTS, ``steps_per_rev``, ZETA) against the
-    quasi-static answer, with the linear dynamics of the thesis's structure at the same speeds."""
-    linear, _ = linear_periodic(SWEEP_RPM, ZETA)
+    """Exudyn's steady state at SWEEP_RPM (the cognate: COGNATE_SWEEP_RPM; ELEMENTS,
+    ``steps_per_rev``, ZETA) against the quasi-static answer, with the linear dynamics of the
+    thesis's structure at the same speeds."""
     rows = []
-    for k, rpm in enumerate(SWEEP_RPM):
-        progress.note(NAME, f"sweep, {rpm:g} rpm")
-        row = _row("sweep", steady_state(rpm), None)
-        deg = np.arange(LINEAR_STEPS) * 360.0 / LINEAR_STEPS
-        _, lin_peak, lin_error = error_of(linear[k], quasi_static(deg, rpm))
-        row.update({"linear_peak": lin_peak, "linear_error_over_peak": lin_error / row["quasi_static_peak"]})
-        rows.append(row)
+    deg = np.arange(LINEAR_STEPS) * 360.0 / LINEAR_STEPS
+    for side, speeds in zip(SIDES, (SWEEP_RPM, COGNATE_SWEEP_RPM)):
+        linear, _ = linear_periodic(speeds, ZETA, side=side)
+        for k, rpm in enumerate(speeds):
+            progress.note(NAME, f"sweep, {side}, {rpm:g} rpm")
+            row = _row("sweep", steady_state(rpm, side=side), None)
+            _, lin_peak, lin_error = error_of(linear[k], quasi_static(deg, rpm, side))
+            row.update({"linear_peak": lin_peak, "linear_error_over_peak": lin_error / row["quasi_static_peak"]})
+            rows.append(row)
     return pd.DataFrame(rows).drop(columns=["study", "link_mass", "compared_with", "change", "newton_diverged_at_s"])
 
 
 def linear_sweep() -> pd.DataFrame:
-    """The linear dynamics of the thesis's structure at every LINEAR_RPM, for ZETA and ZETA_LOW:
-    the peak quasi-static deflection, the dynamic peak, the quasi-static answer's error over its
-    peak, and how much of a start-up transient is left after a revolution."""
+    """The linear dynamics of the thesis's structure at every LINEAR_RPM, per side, for ZETA and
+    ZETA_LOW: the peak quasi-static deflection, the dynamic peak, the quasi-static answer's error
+    over its peak, and how much of a start-up transient is left after a revolution."""
     deg = np.arange(LINEAR_STEPS) * 360.0 / LINEAR_STEPS
     frames = []
-    for zeta in (ZETA, ZETA_LOW):
-        out, decay = linear_periodic(LINEAR_RPM, zeta)
-        rows = []
-        for k, rpm in enumerate(LINEAR_RPM):
-            peak_qs, peak, error = error_of(out[k], quasi_static(deg, rpm))
-            rows.append({"zeta": zeta, "rpm": rpm, "quasi_static_peak": peak_qs, "dynamic_peak": peak,
-                         "error_over_peak": error / peak_qs, "transient_left_per_rev": decay[k]})
-        frames.append(pd.DataFrame(rows))
+    for side in SIDES:
+        for zeta in (ZETA, ZETA_LOW):
+            out, decay = linear_periodic(LINEAR_RPM, zeta, side=side)
+            rows = []
+            for k, rpm in enumerate(LINEAR_RPM):
+                peak_qs, peak, error = error_of(out[k], quasi_static(deg, rpm, side))
+                rows.append({"side": side, "zeta": zeta, "rpm": rpm, "quasi_static_peak": peak_qs, "dynamic_peak": peak,
+                             "error_over_peak": error / peak_qs, "transient_left_per_rev": decay[k]})
+            frames.append(pd.DataFrame(rows))
     return pd.concat(frames, ignore_index=True)
 
 
@@ -526,12 +569,16 @@ def run(out_dir: Path) -> dict:
     freq, freq_port = frequencies()
     progress.note(NAME, "nonlinear statics")
     static = statics()
-    standard, convergence = study_300()
-    linear300, _ = linear_periodic([RPM], ZETA, STEPS_PER_REV)
-    qs300 = quasi_static(standard.deg, RPM)
-    cycle = pd.DataFrame({"crank_deg": standard.deg, "quasi_static_dx": qs300[:, 0], "quasi_static_dy": qs300[:, 1],
-                          "dynamic_dx": standard.deflection[:, 0], "dynamic_dy": standard.deflection[:, 1],
-                          "linear_dynamic_dx": linear300[0, :, 0], "linear_dynamic_dy": linear300[0, :, 1]})
+    standard, cognate, convergence = study_300()
+    cycles = []
+    for run in (standard, cognate):
+        linear300, _ = linear_periodic([RPM], ZETA, STEPS_PER_REV, run.side)
+        qs300 = quasi_static(run.deg, RPM, run.side)
+        cycles.append(pd.DataFrame({"side": run.side, "crank_deg": run.deg, "quasi_static_dx": qs300[:, 0],
+                                    "quasi_static_dy": qs300[:, 1], "dynamic_dx": run.deflection[:, 0],
+                                    "dynamic_dy": run.deflection[:, 1], "linear_dynamic_dx": linear300[0, :, 0],
+                                    "linear_dynamic_dy": linear300[0, :, 1]}))
+    cycle = pd.concat(cycles, ignore_index=True)
     table = sweep()
     progress.note(NAME, "linear dynamics, every rev/min")
     linear = linear_sweep()
@@ -552,28 +599,29 @@ def run(out_dir: Path) -> dict:
 
 
 def summarise(freq, freq_port, static, convergence, table, linear) -> dict:
-    """The scene's numbers, one record (every one measured above)."""
-    peak_static = np.hypot(static["port_dx"], static["port_dy"])
-    nonlinear_gap = np.hypot(static["nonlinear_dx"] - static["port_dx"], static["nonlinear_dy"] - static["port_dy"])
-    exudyn_linear_gap = np.hypot(static["exudyn_linear_dx"] - static["port_dx"],
-                                 static["exudyn_linear_dy"] - static["port_dy"])
-    at_peak = int(np.argmax(peak_static))
-    std = convergence.set_index("study")
-    low = linear[linear["zeta"] == ZETA_LOW]
-    high = linear[linear["zeta"] == ZETA]
-    crank_hz = RPM / 60.0
-    return {"f1_min_hz": float(freq_port["f1_port"].min()), "f1_max_hz": float(freq_port["f1_port"].max()),
-            "f2_min_hz": float(freq_port["f2_port"].min()), "f2_max_hz": float(freq_port["f2_port"].max()),
-            "f1_exudyn_over_port_max": float((freq["f1_exudyn"] / freq["f1_port"] - 1.0).abs().max()),
-            "f1_exudyn_fine_over_port_max": float((freq["f1_exudyn_fine"] / freq["f1_port"] - 1.0).abs().max()),
-            "crank_hz": crank_hz,
+    """The scene's numbers, one record (every one measured above): the source's, then the
+    cognate's (``cognate_...``)."""
+    out = {"crank_hz": RPM / 60.0}
+    for side in SIDES:
+        prefix = "" if side == "source" else "cognate_"
+        f, fp, st, lin = (frame[frame["side"] == side] for frame in (freq, freq_port, static, linear))
+        std = convergence[convergence["side"] == side].set_index("study")
+        sw = table[table["side"] == side]
+        peak_static = np.hypot(st["port_dx"], st["port_dy"])
+        nonlinear_gap = np.hypot(st["nonlinear_dx"] - st["port_dx"], st["nonlinear_dy"] - st["port_dy"])
+        exudyn_linear_gap = np.hypot(st["exudyn_linear_dx"] - st["port_dx"], st["exudyn_linear_dy"] - st["port_dy"])
+        low, high = lin[lin["zeta"] == ZETA_LOW], lin[lin["zeta"] == ZETA]
+        out.update({f"{prefix}{key}": value for key, value in {
+            "f1_min_hz": float(fp["f1_port"].min()), "f1_max_hz": float(fp["f1_port"].max()),
+            "f2_min_hz": float(fp["f2_port"].min()), "f2_max_hz": float(fp["f2_port"].max()),
+            "f1_exudyn_over_port_max": float((f["f1_exudyn"] / f["f1_port"] - 1.0).abs().max()),
+            "f1_exudyn_fine_over_port_max": float((f["f1_exudyn_fine"] / f["f1_port"] - 1.0).abs().max()),
             "quasi_static_peak": float(std.loc["standard", "quasi_static_peak"]),
-            "static_grid_peak_deg": float(static["crank_deg"][at_peak]),
-            "nonlinear_peak": float(np.hypot(static["nonlinear_dx"], static["nonlinear_dy"]).max()),
+            "nonlinear_peak": float(np.hypot(st["nonlinear_dx"], st["nonlinear_dy"]).max()),
             "nonlinear_gap_max": float(nonlinear_gap.max()),
             "nonlinear_gap_over_peak": float(nonlinear_gap.max() / peak_static.max()),
-            "nonlinear_fine_mesh_change": float(static["nonlinear_fine_mesh_change"].max()),
-            "nonlinear_load_steps_change": float(static["nonlinear_load_steps_change"].max()),
+            "nonlinear_fine_mesh_change": float(st["nonlinear_fine_mesh_change"].max()),
+            "nonlinear_load_steps_change": float(st["nonlinear_load_steps_change"].max()),
             "exudyn_linear_gap_over_peak": float(exudyn_linear_gap.max() / peak_static.max()),
             "dynamic_peak": float(std.loc["standard", "dynamic_peak"]),
             "dynamic_error": float(std.loc["standard", "max_error"]),
@@ -582,21 +630,24 @@ def summarise(freq, freq_port, static, convergence, table, linear) -> dict:
             "dynamic_periodicity_in": float(std.loc["standard", "periodicity_in"]),
             "half_step_change": float(std.loc["half step", "change"]),
             "fine_mesh_change": float(std.loc["fine mesh", "change"]),
-            "coarse_mesh_change": float(std.loc["coarse mesh", "change"]),
-            "start_180_change": float(std.loc["start at 180 deg", "change"]),
-            "regularizing_mass_change": float(std.loc[f"links at {REGULARIZING_MASS:.0%} of their mass", "change"]),
-            "massless_low_zeta_diverged_at_s": float(std.loc[f"zeta {ZETA_LOW:g}, massless links", "newton_diverged_at_s"]),
-            "low_zeta_peak": float(std.loc[LOW_NAME, "dynamic_peak"]),
-            "low_zeta_error": float(std.loc[LOW_NAME, "max_error"]),
-            "low_zeta_half_step_change": float(std.loc[f"{LOW_NAME}, half step", "change"]),
-            "limit_check_error_over_peak": float(std.loc[f"{LIMIT_CHECK_RPM:g} rpm", "error_over_peak"]),
-            "limit_check_half_step": float(std.loc[f"{LIMIT_CHECK_RPM:g} rpm, half step", "error_over_peak"]),
-            "limit_check_fine_mesh": float(std.loc[f"{LIMIT_CHECK_RPM:g} rpm, fine mesh", "error_over_peak"]),
             "linear_dynamic_peak_300": float(high.loc[high["rpm"] == RPM, "dynamic_peak"].iloc[0]),
             "linear_dynamic_peak_300_low": float(low.loc[low["rpm"] == RPM, "dynamic_peak"].iloc[0]),
-            "speed_limit_rpm": crossing(table["rpm"], table["error_over_peak"]),
+            "speed_limit_rpm": crossing(sw["rpm"], sw["error_over_peak"]),
             "speed_limit_linear_rpm": crossing(high["rpm"], high["error_over_peak"]),
-            "speed_limit_linear_low_zeta_rpm": crossing(low["rpm"], low["error_over_peak"])}
+            "speed_limit_linear_low_zeta_rpm": crossing(low["rpm"], low["error_over_peak"])}.items()})
+    std = convergence[convergence["side"] == "source"].set_index("study")
+    out.update({
+        "coarse_mesh_change": float(std.loc["coarse mesh", "change"]),
+        "start_180_change": float(std.loc["start at 180 deg", "change"]),
+        "regularizing_mass_change": float(std.loc[f"links at {REGULARIZING_MASS:.0%} of their mass", "change"]),
+        "massless_low_zeta_diverged_at_s": float(std.loc[f"zeta {ZETA_LOW:g}, massless links", "newton_diverged_at_s"]),
+        "low_zeta_peak": float(std.loc[LOW_NAME, "dynamic_peak"]),
+        "low_zeta_error": float(std.loc[LOW_NAME, "max_error"]),
+        "low_zeta_half_step_change": float(std.loc[f"{LOW_NAME}, half step", "change"]),
+        "limit_check_error_over_peak": float(std.loc[f"{LIMIT_CHECK_RPM:g} rpm", "error_over_peak"]),
+        "limit_check_half_step": float(std.loc[f"{LIMIT_CHECK_RPM:g} rpm, half step", "error_over_peak"]),
+        "limit_check_fine_mesh": float(std.loc[f"{LIMIT_CHECK_RPM:g} rpm, fine mesh", "error_over_peak"])})
+    return out
 
 
 def _limit_words(summary: dict) -> str:
@@ -645,6 +696,16 @@ def report(freq, static, convergence, table, summary) -> str:
              "crank pass through the first mode one after another and the error jumps from resonance to "
              f"resonance (at {RPM:g} rpm, the second harmonic). A designer who wants the 1977 method to hold "
              "keeps the frozen linkage's first natural frequency above about ten times the crank frequency.",
+             f"- **The cognate.** The crossed cognate traces the same path with other links (the thesis's "
+             f"other mechanism). Its frozen first mode runs from {s['cognate_f1_min_hz']:.1f} to "
+             f"{s['cognate_f1_max_hz']:.1f} Hz, above the second harmonic at {RPM:g} rpm and just under the third; "
+             f"quasi-statically it deflects up to {s['cognate_quasi_static_peak']:.2f} in, dynamically "
+             f"{s['cognate_dynamic_peak']:.2f} in (off by up to {s['cognate_dynamic_error']:.2f} in, "
+             f"{s['cognate_dynamic_error_over_peak']:.1f} times its quasi-static peak; half the step moves it by "
+             f"{s['cognate_half_step_change']:.3f} in, twice the mesh by {s['cognate_fine_mesh_change']:.3f} in); "
+             f"nonlinear statics differ by {s['cognate_nonlinear_gap_over_peak']:.0%} of its peak. Its quasi-static "
+             f"answer holds to 10 % up to {s['cognate_speed_limit_rpm']:.0f} rpm in Exudyn "
+             f"({s['cognate_speed_limit_linear_rpm']:.0f} rpm for its structure run dynamically).",
              f"- **Less damping.** At {ZETA_LOW:.0%} damping and {RPM:g} rpm the runs are fragile: "
              + "; ".join(f"{r.study}: " + (f"Newton diverged {r.newton_diverged_at_s:.2f} s after the start"
                                            if not math.isnan(r.newton_diverged_at_s) else
@@ -666,18 +727,19 @@ def report(freq, static, convergence, table, summary) -> str:
              f"a steady state when two successive revolutions agree to {PERIODICITY_IN:g} in (at most "
              f"{MAX_REVOLUTIONS}). The runs start undeformed with the rigid linkage's velocities.",
              "", f"## The {RPM:g} rpm steady state and its checks", "",
-             "| run | elements | steps/rev | zeta | link mass | start (deg) | revolutions | period | last two revs "
-             "differ (in) | dynamic peak (in) | quasi-static error (in) | error / quasi-static peak | "
+             "| side | run | elements | steps/rev | zeta | link mass | start (deg) | revolutions | period | last two "
+             "revs differ (in) | dynamic peak (in) | quasi-static error (in) | error / quasi-static peak | "
              "largest distance from another run (in) |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
-    lines += [f"| {r.study} | {r.elements} | {r.steps_per_rev} | {r.zeta:g} | {r.link_mass:g} | {r.start_deg:g} | "
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    lines += [f"| {r.side} | {r.study} | {r.elements} | {r.steps_per_rev} | {r.zeta:g} | {r.link_mass:g} | {r.start_deg:g} | "
               f"{r.revolutions} | {_period_words(r)} | {r.periodicity_in:.1e} | {r.dynamic_peak:.4f} | {r.max_error:.4f} | "
               f"{r.error_over_peak:.3f} | {'' if math.isnan(r.change) else f'{r.change:.2e} ({r.compared_with})'} |"
               for r in convergence.itertuples()]
     lines += ["", f"## The speed sweep (Exudyn, zeta {ZETA:g})", "",
-              "| rpm | steps/rev | revolutions | last two revs differ (in) | quasi-static peak (in) | dynamic peak (in) | "
-              "error / peak | thesis's structure, dynamic: error / peak |", "|---|---|---|---|---|---|---|---|"]
-    lines += [f"| {r.rpm:g} | {r.steps_per_rev} | {r.revolutions} | {r.periodicity_in:.1e} | {r.quasi_static_peak:.4f} | "
+              "| side | rpm | steps/rev | revolutions | last two revs differ (in) | quasi-static peak (in) | "
+              "dynamic peak (in) | error / peak | thesis's structure, dynamic: error / peak |",
+              "|---|---|---|---|---|---|---|---|---|"]
+    lines += [f"| {r.side} | {r.rpm:g} | {r.steps_per_rev} | {r.revolutions} | {r.periodicity_in:.1e} | {r.quasi_static_peak:.4f} | "
               f"{r.dynamic_peak:.4f} | {r.error_over_peak:.3f} | {r.linear_error_over_peak:.3f} |"
               for r in table.itertuples()]
     lines += ["", "## The frozen linkage's natural frequencies", "",
@@ -685,7 +747,10 @@ def report(freq, static, convergence, table, summary) -> str:
               f"over the cycle (the port's structure, every degree); Exudyn's ({ELEMENTS} elements per link, its "
               "Jacobian condensed onto the path point: exact for massless links) within "
               f"{s['f1_exudyn_over_port_max']:.0e} ({s['f1_exudyn_fine_over_port_max']:.0e} with {2 * ELEMENTS}). "
-              f"The drive's harmonics at {RPM:g} rpm: {s['crank_hz']:g}, {2 * s['crank_hz']:g}, {3 * s['crank_hz']:g} Hz.",
+              f"The drive's harmonics at {RPM:g} rpm: {s['crank_hz']:g}, {2 * s['crank_hz']:g}, {3 * s['crank_hz']:g} Hz. "
+              f"The cognate: first mode {s['cognate_f1_min_hz']:.2f}-{s['cognate_f1_max_hz']:.2f} Hz, second "
+              f"{s['cognate_f2_min_hz']:.1f}-{s['cognate_f2_max_hz']:.0f} Hz; Exudyn within "
+              f"{s['cognate_f1_exudyn_over_port_max']:.0e}.",
               "", "![frequencies and speed sweep](elastodynamics.png)", "", "![the 300 rpm cycle](cycle.png)", ""]
     return "\n".join(lines)
 
@@ -708,21 +773,24 @@ def overview(summary: dict) -> list[str]:
 
 
 def plot_overview(freq, freq_port, table, linear, summary, path: Path) -> None:
-    """Left: the frozen linkage's two natural frequencies (Hz) against the crank angle, with the
+    """Left: the frozen linkages' two natural frequencies (Hz) against the crank angle, with the
     300 rpm drive's first three harmonics; right: the quasi-static answer's error over its peak
-    against the speed, Exudyn and the thesis's structure run dynamically."""
+    against the speed, Exudyn and the thesis's structure run dynamically; source and cognate."""
     from ...figures import save
     from ...report import panel_grid, top_legend
-    fig, margins = panel_grid(11.0, 2, 1, 3.4, TITLE, legend_rows=3, gap_across=0.9)
+    fig, margins = panel_grid(11.0, 2, 1, 3.4, TITLE, legend_rows=6, gap_across=0.9)
     left, right = fig.subplots(1, 2)
     handles = {}
-    handles["first mode (the port)"], = left.plot(freq_port["crank_deg"], freq_port["f1_port"],
-                                                              color="tab:blue", lw=1.6)
-    handles["second mode (the port)"], = left.plot(freq_port["crank_deg"], freq_port["f2_port"],
-                                                               color="tab:blue", lw=1.2, ls="--")
-    handles[f"Exudyn, {ELEMENTS} elements/link"], = left.plot(
-        np.r_[freq["crank_deg"], freq["crank_deg"]], np.r_[freq["f1_exudyn"], freq["f2_exudyn"]], "o",
-        color="k", ms=3.5, mfc="none")
+    looks = {"source": dict(color="tab:blue", marker="o"), "cognate": dict(color="tab:purple", marker="^")}
+    for side in SIDES:
+        port, exu = freq_port[freq_port["side"] == side], freq[freq["side"] == side]
+        color = looks[side]["color"]
+        handles[f"{side}: first mode (port)"], = left.plot(port["crank_deg"], port["f1_port"], color=color, lw=1.6)
+        handles[f"{side}: second mode (port)"], = left.plot(port["crank_deg"], port["f2_port"], color=color, lw=1.1,
+                                                                ls="--")
+        handles[f"{side}: Exudyn"], = left.plot(
+            np.r_[exu["crank_deg"], exu["crank_deg"]], np.r_[exu["f1_exudyn"], exu["f2_exudyn"]], looks[side]["marker"],
+            color="k", ms=3.5, mfc="none", ls="none")
     for n, style in zip((1, 2, 3), (":", "-.", (0, (6, 2)))):
         handles[f"{n} x crank at {RPM:g} rpm"] = left.axhline(n * summary["crank_hz"], color="tab:red", lw=1.1, ls=style)
     left.set_ylim(0.0, 30.0)
@@ -730,16 +798,22 @@ def plot_overview(freq, freq_port, table, linear, summary, path: Path) -> None:
     left.set_xticks(np.arange(0.0, 361.0, 60.0))
     left.set_xlabel("crank angle (deg)")
     left.set_ylabel("natural frequency (Hz)")
-    left.set_title("the frozen linkage's natural frequencies")
-    high, low = (linear[linear["zeta"] == z] for z in (ZETA, ZETA_LOW))
-    handles[f"Exudyn, zeta {ZETA:g}"], = right.semilogy(table["rpm"], table["error_over_peak"], "s",
-                                                                    color="k", ms=4)
-    handles[f"thesis's structure, zeta {ZETA:g}"], = right.semilogy(high["rpm"], high["error_over_peak"],
-                                                                                color="tab:green", lw=1.4)
-    handles[f"thesis's structure, zeta {ZETA_LOW:g}"], = right.semilogy(low["rpm"], low["error_over_peak"], color="tab:orange",
-                                                              lw=1.0, ls="--")
-    handles[f"Exudyn, zeta {ZETA_LOW:g} ({REGULARIZING_MASS:.0%} link mass)"], = right.semilogy(
-        [RPM], [summary["low_zeta_error"] / summary["quasi_static_peak"]], "D", color="tab:orange", ms=5, mfc="none")
+    left.set_title("the frozen linkages' natural frequencies")
+    for side in SIDES:
+        sw, lin = table[table["side"] == side], linear[linear["side"] == side]
+        color = looks[side]["color"]
+        handles[f"{side}: Exudyn, zeta {ZETA:g}"], = right.semilogy(
+            sw["rpm"], sw["error_over_peak"], "s" if side == "source" else "^", color=color, ms=4.5, ls="none")
+        for zeta, style in ((ZETA, "-"), (ZETA_LOW, "--")):
+            if side == "cognate" and zeta == ZETA_LOW:
+                continue
+            one = lin[lin["zeta"] == zeta]
+            handles[f"{side}: thesis's, zeta {zeta:g}"], = right.semilogy(
+                one["rpm"], one["error_over_peak"], color="tab:green" if side == "source" and zeta == ZETA
+                else "tab:orange" if side == "source" else "tab:brown", lw=1.2 if zeta == ZETA else 0.9, ls=style)
+    handles[f"source: Exudyn, zeta {ZETA_LOW:g}, link mass {REGULARIZING_MASS:.0%}"], = right.semilogy(
+        [RPM], [summary["low_zeta_error"] / summary["quasi_static_peak"]], "D", color="tab:orange", ms=5, mfc="none",
+        ls="none")
     handles["10 % of the peak"] = right.axhline(ERROR_LEVEL, color="tab:red", lw=1.0)
     right.axvline(summary["speed_limit_rpm"], color="tab:red", lw=1.0, ls=":")
     right.set_xlabel("crank speed (rev/min)")
@@ -748,17 +822,18 @@ def plot_overview(freq, freq_port, table, linear, summary, path: Path) -> None:
     right.set_xlim(0.0, 410.0)
     for ax in (left, right):
         ax.grid(alpha=0.3, which="both")
-    top_legend(fig, handles, rows=3)
+    top_legend(fig, handles, rows=6)
     caption = (f"Left: the two natural frequencies of the path-point mass on the frozen linkage (Case I: massless links) "
-               f"over the crank angle, from the corrected port's flexibility (line) and Exudyn's beam model (circles, every "
-               f"10 deg); the first mode runs from {summary['f1_min_hz']:.2f} to {summary['f1_max_hz']:.2f} Hz, the second "
-               f"from {summary['f2_min_hz']:.1f} Hz up to {summary['f2_max_hz']:.0f} Hz (cut off at 30 Hz); the red lines are "
-               f"the first three harmonics of the crank at {RPM:g} rpm. Right: the largest distance between the "
+               f"over the crank angle, from the corrected port's flexibility (lines) and Exudyn's beam model (markers, every "
+               f"10 deg), for the source four-bar (first mode {summary['f1_min_hz']:.2f}-{summary['f1_max_hz']:.2f} Hz) and "
+               f"its cognate ({summary['cognate_f1_min_hz']:.2f}-{summary['cognate_f1_max_hz']:.2f} Hz); the second modes "
+               f"reach {summary['f2_max_hz']:.0f} and {summary['cognate_f2_max_hz']:.0f} Hz (cut off at 30 Hz); the red "
+               f"lines are the first three harmonics of the crank at {RPM:g} rpm. Right: the largest distance between the "
                f"elastodynamic steady state and the quasi-static deflection over a revolution, divided by the peak "
-               f"quasi-static deflection, against the crank speed: Exudyn (squares) and the thesis's structure with the "
-               f"deflection's inertia kept (lines); the diamond is Exudyn at {ZETA_LOW:g} with the links given "
-               f"{REGULARIZING_MASS:.0%} of their mass. It passes 10 % at {summary['speed_limit_rpm']:.0f} rpm (dotted) in "
-               f"Exudyn.")
+               f"quasi-static deflection, against the crank speed: Exudyn ({ELEMENTS} elements per link, markers) and the "
+               f"thesis's structure with the deflection's inertia kept (lines, \"thesis's\"); the diamond is Exudyn at {ZETA_LOW:g} with the links given "
+               f"{REGULARIZING_MASS:.0%} of their mass. The source passes 10 % at {summary['speed_limit_rpm']:.0f} rpm "
+               f"(dotted), the cognate at {summary['cognate_speed_limit_rpm']:.0f} rpm, in Exudyn.")
     save(fig, path, caption, **margins)
 
 
@@ -768,8 +843,9 @@ def plot_cycle(cycle, static, convergence, summary, path: Path) -> None:
     dynamically."""
     from ...figures import save
     from ...report import panel_grid, top_legend
-    fig, margins = panel_grid(11.0, 2, 1, 3.2, f"The path point's deflection over a revolution at {RPM:g} rpm",
-                              legend_rows=2, gap_across=0.9)
+    fig, margins = panel_grid(11.0, 2, 1, 3.2, f"The source four-bar's path point deflection over a revolution "
+                              f"at {RPM:g} rpm", legend_rows=2, gap_across=0.9)
+    cycle, static = cycle[cycle["side"] == "source"], static[static["side"] == "source"]
     axes = fig.subplots(1, 2, sharex=True)
     handles = {}
     for ax, c in zip(axes, ("dx", "dy")):
