@@ -4,7 +4,10 @@ delta = beta1^T F beta2 P (eq. 32): beta1 the Case I force transformation (8x3),
 beta2 (8x8) = [beta1 | the columns of eq. (30)], F the Case I flexibility, P the
 inertia loads: the extender's mass at the path point (P1, P2), the input link's
 at the crank pin (P4 along, P5 across the link), the follower's at its pin (P6,
-along), the coupler's at the crank pin (P7, along the coupler).
+along), the coupler's at the crank pin (P7, along the coupler).  Each P4..P7 is the
+load's component along its element coordinate as beta1 orients it: the crossed cognate's
+crank coordinates f4, f5 run along -e2, -n2 (eqs. 20-21), the source's along +e2, +n2;
+P7 is the component along -e3 in both (the direction column 7's f4, f5 entries carry).
 Masses are density * area * length (density in lbf/in^3, a weight).
 Units: inch, pound-force, second; degrees for ``deg``.  Arguments and errors as in
 ``ali1977.case1`` (the density, like the section, is the listing's REAL*4 literal).
@@ -29,14 +32,18 @@ from ..real4 import store
 #: The bugs the Case II source listing has (those of Case I's source listing but the
 #: 101 deg coupler angle and the 400 rpm, which are the Case I listing's alone).
 LISTING = PRINTED.without("source_alpha_101", "source_rpm_400", "cognate_frame", "cognate_moment_row",
-                          "node_mass_from_pin", "uncoupled_nodes")
+                          "node_mass_from_pin", "uncoupled_nodes", "cognate_joint_load_signs")
 #: The cognate listing's (and reconstruction's) bugs: the Case I cognate's plus the joint loads.
 COGNATE_LISTING = PRINTED.without("source_alpha_101", "source_rpm_400", "i_coefficient", "g_coefficient",
                                   "omega3_sign", "node_mass_from_pin", "uncoupled_nodes")
 DENSITY = 0.098          # lbf/in^3, aluminium (DNTY)
-#: The crossed cognate's coupler axis from its crank pin: -e3 (B' = A' - CL3 e3), the axis
-#: the printed page's column 7, U(52)=DCOS(CT3-T2), U(53)=DSIN(CT3-T2), decomposes (D037).
-COGNATE_COUPLER = -1.0
+#: The crossed cognate's crank coordinates f4, f5 run along -e2, -n2 (eqs. 20-21): P4, P5 are
+#: the components along them (the source's along +e2, +n2).
+COGNATE_CRANK = -1.0
+#: The reconstruction's signs for the cognate's loads (D037, D145): P4, P5 along the source's
+#: +e2, +n2, and P7 reversed (the coupler's axis from the crank pin, -e3, B' = A' - CL3 e3): the
+#: sign Table II prefers, against the cognate's own f4, f5 and column 7.
+RECONSTRUCTION_CRANK, RECONSTRUCTION_COUPLER = 1.0, -1.0
 
 
 _P4_TO_P8 = np.arange(3, 8)
@@ -45,7 +52,9 @@ _P4_TO_P8 = np.arange(3, 8)
 def beta2(mech, quirks: Quirks, cognate: bool = False) -> np.ndarray:
     """beta2 (N, 8, 8): beta1, then P4..P8 into f4, f5, f6, (f4, f5, f7), f8: eq. (30),
     or for the crossed cognate eq. (31), with cos, sin(t3* - t2) in column 7; REAL*4 as the
-    listing stores it where ``quirks.real4_storage``."""
+    listing stores it where ``quirks.real4_storage``.  Column 7 is the coupler's load at the
+    crank pin: f7 = P7 only where ``quirks.coupler_load_in_f7`` (the listings' B(55)=1.0,
+    U(55)=1.0, D144); a load at the pin carries no coupler force, f7 = 0."""
     t2, t3 = mech.extra["t2"], mech.extra["t3"]
     right = np.zeros(mech.beta.shape[:-1] + (8,), np.float32 if quirks.real4_storage else np.float64)
     right[..., :3] = mech.beta
@@ -53,30 +62,37 @@ def beta2(mech, quirks: Quirks, cognate: bool = False) -> np.ndarray:
     turn = t3 - t2 if cognate else t2 - t3
     right[..., 3, 6] = libm.cos(turn) if cognate else -libm.cos(turn)
     right[..., 4, 6] = libm.sin(turn)
+    if not quirks.coupler_load_in_f7:                                               # D144
+        right[..., 6, 6] = 0.0
     return right
 
 
 def joint_loads(mech, lengths: Lengths, density: float, area: float, quirks: Quirks,
-                coupler: float = 1.0) -> np.ndarray:
+                cognate: bool = False) -> np.ndarray:
     """P1..P8 (N, 8) in lbf, as the listing forms them (statements 56-72); the pins'
     accelerations are the linkage's (``mech.extra["linkage"].pin_accelerations()``).
-    ``coupler`` (+1 or -1): the direction of the coupler's axis from the crank pin, +e3 as in
-    the source (B = A + L3 e3), -e3 for the crossed cognate (B' = A' - CL3 e3): P7 is the
-    coupler mass's load along that axis, the axis beta2's column 7 decomposes."""
+    ``cognate``: the crossed cognate's loads (a RECONSTRUCTION, D037): P4, P5 along its crank
+    coordinates -e2, -n2 (COGNATE_CRANK) and P7 along -e3 as the source's, or, where
+    ``quirks.cognate_joint_load_signs``, the reconstruction's signs (D145)."""
     link = mech.extra["linkage"]
     (xaa, yaa), (xba, yba) = link.pin_accelerations()
     m1, m2, m3, m4 = (density * (area * length) for length in (lengths.l1, lengths.l2, lengths.l3, lengths.l4))
+    crank, coupler = 1.0, 1.0
+    if cognate:
+        crank, coupler = ((RECONSTRUCTION_CRANK, RECONSTRUCTION_COUPLER) if quirks.cognate_joint_load_signs  # D145
+                          else (COGNATE_CRANK, 1.0))
     return _joint_loads(np.ascontiguousarray(mech.acc), xaa, yaa, xba, yba, link.c2, link.s2, link.c3, link.s3,
                         link.c4, link.s4, m1, m2, m3, m4, GRAVITY_REAL4 if quirks.real4_storage else GRAVITY_IN,
-                        quirks.real4_storage, quirks.joint_load_components, quirks.inertia_sign, coupler)
+                        quirks.real4_storage, quirks.joint_load_components, quirks.inertia_sign, crank, coupler)
 
 
 @njit(cache=True, error_model="numpy")
 def _joint_loads(acc, xaa, yaa, xba, yba, c2, s2, c3, s3, c4, s4, m1, m2, m3, m4, g_const, real4, components,
-                 plus_m_a, coupler):
+                 plus_m_a, crank, coupler):
     """joint_loads at each input angle (compiled as ali1977.linkage's kernels are): the path point's
     XPA, YPA (in/s^2, REAL*4 with ``real4``), the pins' XAA..YBA, the cos and sin of t2, t3, t4,
-    the links' weights m1..m4 (lbf), g (in/s^2) and the coupler's direction (joint_loads)."""
+    the links' weights m1..m4 (lbf), g (in/s^2) and the signs of P4, P5 (``crank``) and of P7
+    (``coupler``), +1 or -1 (joint_loads)."""
     loads = np.empty((c2.size, 8))
     for n in range(c2.size):
         xpa, ypa = acc[n, 0], acc[n, 1]
@@ -90,9 +106,10 @@ def _joint_loads(acc, xaa, yaa, xba, yba, c2, s2, c3, s3, c4, s4, m1, m2, m3, m4
             p5 = m1 * (-xaa[n] * s2[n] + yaa[n] * c2[n])
             p6 = m4 * (xba[n] * c4[n] + yba[n] * s4[n])
             p7 = m3 * (-xaa[n] * c3[n] - yaa[n] * s3[n])
-        p7 = coupler * p7                                                           # exact: a sign
-        row = ((m2 * xpa) / g_const, (m2 * ypa) / g_const, 0.0, (m1 * (xaa[n] * c2[n] + yaa[n] * s2[n])) / g_const,
-               p5 / g_const, p6 / g_const, p7 / g_const, 0.0)
+        p4 = crank * (m1 * (xaa[n] * c2[n] + yaa[n] * s2[n]))                        # exact: signs
+        p5, p7 = crank * p5, coupler * p7
+        row = ((m2 * xpa) / g_const, (m2 * ypa) / g_const, 0.0, p4 / g_const, p5 / g_const, p6 / g_const,
+               p7 / g_const, 0.0)
         for i in range(8):
             loads[n, i] = row[i] if plus_m_a else -row[i]                          # D018
     return loads
@@ -127,9 +144,10 @@ def case2_cognate(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = N
     """Case II, crossed cognate: a RECONSTRUCTION (D037).  The listing's page with the loads
     is missing; its loads are the source listing's (joint_loads) on the cognate's links
     (density * area * CLk) and joints (crank pin A' = CL1 e^{i t2}, follower pin
-    B' = A' - CL3 e^{i t3*}), in the cognate's frame, the coupler's load P7 along the
-    cognate's coupler axis (-e3, the axis the printed page's column 7 decomposes).  Returns ``xp, yp`` (source),
-    ``cxp, cyp``, ``dx, dy`` (in) and ``rot`` (rad)."""
+    B' = A' - CL3 e^{i t3*}), in the cognate's frame; P4, P5, P7 along the cognate's own element
+    coordinates (joint_loads), or with the reconstruction's signs where
+    ``quirks.cognate_joint_load_signs`` (D145).  Returns ``xp, yp`` (source), ``cxp, cyp``,
+    ``dx, dy`` (in) and ``rot`` (rad)."""
     deg = angles_deg("deg", deg)
     density = weight_lbf("density", density)
     expect("section", section, Section)
@@ -142,7 +160,7 @@ def case2_cognate(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = N
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         # the cognate's links as they are (a degenerate cognate may have zero or NaN lengths)
         cog_lengths = SimpleNamespace(l1=cog.cl1, l2=cog.cl2, l3=cog.cl3, l4=cog.cl4, l5=cog.cl5)
-        loads = store(joint_loads(mech, cog_lengths, dens, sec.area, quirks, coupler=COGNATE_COUPLER), real4)
+        loads = store(joint_loads(mech, cog_lengths, dens, sec.area, quirks, cognate=True), real4)
         flex = flexibility(cog.cl2, cog.cl1, cog.cl3, cog.cl4, sec, quirks)
         delta = deflection(mech.beta, flex, loads, quirks, right=beta2(mech, quirks, cognate=True))
     dx, dy = delta[:, 0].astype(np.float64), delta[:, 1].astype(np.float64)
@@ -155,4 +173,5 @@ def case2_cognate(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = N
     return mech.extra["linkage"].finish(out, "case II cognate")
 
 
-__all__ = ["LISTING", "COGNATE_LISTING", "DENSITY", "COGNATE_COUPLER", "beta2", "joint_loads", "case2_source", "case2_cognate"]
+__all__ = ["LISTING", "COGNATE_LISTING", "DENSITY", "COGNATE_CRANK", "RECONSTRUCTION_CRANK", "RECONSTRUCTION_COUPLER",
+           "beta2", "joint_loads", "case2_source", "case2_cognate"]

@@ -39,12 +39,12 @@ from ..real4 import store
 #: flexibility (E*I), 60 deg and 300 rpm; it adds the node masses and the uncoupled nodes.
 LISTING = PRINTED.without("source_alpha_101", "source_rpm_400", "i_coefficient", "input_link_bending_area",
                           "cognate_frame", "cognate_moment_row", "joint_load_components",
-                          "joint_b_acceleration_sign")
+                          "joint_b_acceleration_sign", "coupler_load_in_f7", "cognate_joint_load_signs")
 #: The reconstruction's quirks for the cognate (no listing, D037): the Case I cognate
 #: listing's bugs with the Case III source listing's changes (E*I bending, node weights).
 COGNATE_LISTING = PRINTED.without("source_alpha_101", "source_rpm_400", "i_coefficient", "g_coefficient",
                                   "omega3_sign", "input_link_bending_area", "joint_load_components",
-                                  "joint_b_acceleration_sign")
+                                  "joint_b_acceleration_sign", "coupler_load_in_f7", "cognate_joint_load_signs")
 DENSITY = 0.098          # lbf/in^3 (DNTY)
 #: The listing's nodes are L21=L2-2.0, L22=L2-4.0, L23=L2-6.0, L24=L2-8.0: its example's
 #: extender (10 in) over its 5 nodes, as a constant; for n nodes, this length over n.

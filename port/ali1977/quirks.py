@@ -28,6 +28,8 @@ class Quirks(QuirkSwitches):
     toggle_as_open: bool = True          # D142  a toggle whose discriminant rounds below 0 is "cannot close"
     joint_load_components: bool = True   # D031  Case II: P5, P6, P7 not the components along the elements
     joint_b_acceleration_sign: bool = True  # D032  Case II: +L3*ALPH3*SIN(T3) in B's x-acceleration
+    coupler_load_in_f7: bool = True      # D144  Case II: beta2's column 7 puts the crank pin's P7 into the coupler's f7
+    cognate_joint_load_signs: bool = True  # D145  Case II cognate (reconstruction): P4, P5, P7 reversed (source's axes)
     node_mass_from_pin: bool = True      # D033  Case III: node k carries the mass of the extender up to it
     uncoupled_nodes: bool = True         # D034  Case III: block-diagonal beta*, F*: a node feels only its own load
     tip_rotation_node_2: bool = True     # D035  Case III: block 1's beta* column 3 in block 2's rows (with D034)

@@ -6,7 +6,7 @@ import pytest
 
 from linkrepro.legacy import ali1977
 from linkrepro.port.ali1977 import CORRECTED, Lengths, source_case1
-from linkrepro.port.ali1977.case2 import COGNATE_COUPLER, LISTING as CASE2, beta2, case2_cognate, case2_source, joint_loads
+from linkrepro.port.ali1977.case2 import LISTING as CASE2, beta2, case2_cognate, case2_source, joint_loads
 from linkrepro.port.ali1977.case3 import LISTING as CASE3, _coupled_tip, case3_cognate, case3_source, node_positions
 from linkrepro.port.ali1977.cognate import cognate_mechanics
 from linkrepro.port.ali1977.data import EXAMPLE
@@ -91,28 +91,53 @@ def test_case2_corrected_joint_loads_project_finite_difference_accelerations():
 
 
 @pytest.mark.parametrize("cognate", [False, True])
-def test_case2_coupler_load_and_its_column_name_the_same_axis(cognate):
-    """P7 times beta2's column 7 is the force the coupler's mass puts on the crank pin along the
-    coupler: -(m3/g) (a_A . e) e for the coupler's axis e, whichever way e points (the sign a
-    reconstruction of the cognate's lost page must get right, D037).  a_A by finite differences
-    of A = L1 e^{i t2}; the column's components along and across the crank turned back into x, y."""
+def test_case2_joint_loads_times_their_columns_are_the_statics_of_the_joint_masses(cognate):
+    """D144, D145: beta2's columns 4, 5 and 7 times P4, P5 and P7 (CORRECTED) are the element
+    forces f4..f8 that the masses at the crank pin A put on the frozen structure: the crank's
+    d'Alembert force -(m1/g) a_A and the coupler's component along the coupler, -(m3/g)(a_A . e3) e3,
+    with a_A by finite differences of A = L1 e^{i t2}.  The statics uses neither beta2 nor
+    joint_loads: a force Q at A on the coupler body is the force Q at the path point P with the
+    moment (A - P) x Q, whose element forces are beta1's (rows f4..f8, each mechanism's own
+    signs: the cognate's f4, f5 run along -e2, -n2, eqs. 20-21).  A force at the pin has no moment
+    about A: the follower and the coupler element carry nothing (f6 = f7 = f8 = 0), whichever
+    link the mass belongs to."""
     deg = np.arange(5.0, 360.0, 35.0)
     mechanics = cognate_mechanics if cognate else source_mechanics
     kw = {} if cognate else {"speed_type": "REAL"}
     mech = mechanics(deg, rpm=300.0, quirks=CORRECTED, **kw)
     lengths = mech.extra["cognate"] if cognate else EXAMPLE.lengths
-    l1, l3 = (lengths.cl1, lengths.cl3) if cognate else (lengths.l1, lengths.l3)
-    links = SimpleNamespace(l1=l1, l2=0.0, l3=l3, l4=(lengths.cl4 if cognate else lengths.l4))
-    p7 = joint_loads(mech, links, DENSITY, AREA, CORRECTED, coupler=COGNATE_COUPLER if cognate else 1.0)[:, 6]
-    column = beta2(mech, CORRECTED, cognate=cognate)[:, 3:5, 6]
+    l1, l2, l3, l4 = ((lengths.cl1, lengths.cl2, lengths.cl3, lengths.cl4) if cognate
+                      else (lengths.l1, lengths.l2, lengths.l3, lengths.l4))
+    links = SimpleNamespace(l1=l1, l2=l2, l3=l3, l4=l4)
+    loads = joint_loads(mech, links, DENSITY, AREA, CORRECTED, cognate=cognate)
+    right = beta2(mech, CORRECTED, cognate=cognate)
     t2, t3 = mech.extra["t2"], mech.extra["t3"]
-    along, across = np.exp(1j * t2), 1j * np.exp(1j * t2)
-    force = p7 * (column[:, 0] * along + column[:, 1] * across)
+    pin = l1 * np.exp(1j * t2)
+    arm = pin - (mech.xp + 1j * mech.yp)                                     # A - P
     acc_a = _fd_acceleration(lambda d: l1 * np.exp(1j * np.radians(d)), deg)
+    g = 12.0 * 32.178
     axis = np.exp(1j * t3)
-    expected = -(DENSITY * AREA * l3 / (12.0 * 32.178)) * (acc_a.real * axis.real + acc_a.imag * axis.imag) * axis
-    scale = np.abs(expected).max()
-    np.testing.assert_allclose(force, expected, atol=1e-5 * scale)
+    crank_mass = -(DENSITY * AREA * l1 / g) * acc_a
+    coupler_mass = -(DENSITY * AREA * l3 / g) * (acc_a.real * axis.real + acc_a.imag * axis.imag) * axis
+
+    def statics(force):
+        """f4..f8 (N, 5) of the force (complex, lbf) at A."""
+        moment = arm.real * force.imag - arm.imag * force.real
+        return np.einsum("nij,nj->ni", mech.beta[:, 3:8], np.stack([force.real, force.imag, moment], axis=1))
+
+    for got, force in ((loads[:, 3, None] * right[:, 3:8, 3] + loads[:, 4, None] * right[:, 3:8, 4], crank_mass),
+                       (loads[:, 6, None] * right[:, 3:8, 6], coupler_mass)):
+        expected = statics(force)
+        scale = np.abs(expected).max()
+        np.testing.assert_allclose(got, expected, rtol=0, atol=1e-5 * scale)
+        assert np.abs(expected[:, 2:]).max() < 1e-12 * scale                 # f6 = f7 = f8 = 0
+    assert (right[:, :3, 3:] == 0.0).all()                                    # nor the extender
+    # the listings' column 7 (f7 = P7, D144), and the reconstruction's signs (D145): P4, P5, P7 reversed
+    assert (beta2(mech, CORRECTED.only("coupler_load_in_f7", True), cognate=cognate)[:, 6, 6] == 1.0).all()
+    reconstruction = joint_loads(mech, links, DENSITY, AREA, CORRECTED.only("cognate_joint_load_signs", True),
+                                 cognate=cognate)
+    flips = np.array([1, 1, 1, -1, -1, 1, -1, 1]) if cognate else np.ones(8)
+    np.testing.assert_array_equal(reconstruction, loads * flips)
 
 
 def test_case3_with_one_node_is_case1_with_the_extender_at_the_tip():

@@ -101,7 +101,7 @@ def _case2(flips: frozenset) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.nda
         p5, p6, p7 = m1 * (yaa * s2 - xaa * c2), m4 * (yba * s4 - xba * c4), m3 * (y7 * s3 - x7 * c3)
     else:
         p5, p6, p7 = m1 * (-xaa * s2 + yaa * c2), m4 * (xba * c4 + yba * s4), m3 * (-x7 * c3 - y7 * s3)
-    p7 = -p7               # the reconstruction: the cognate's coupler runs from A' along -e3 (D037)
+    p7 = -p7               # the reconstruction's sign (D037), the one Table II prefers, against the statics (D145)
     g = GRAVITY_REAL4
     xpa, ypa = (mech.acc[:, k].astype(np.float32).astype(np.float64) for k in (0, 1))
     zero = np.zeros_like(xpa)

@@ -18,17 +18,11 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
-from types import SimpleNamespace
 
 import numpy as np
 import pandas as pd
 
-from ....port.ali1977 import case2 as _case2
-from ....port.ali1977.cognate import cognate_linkage
-from ....port.ali1977.data import EXAMPLE
 from ....port.ali1977.quirks import CORRECTED
-from ....port.ali1977.source import source_linkage
-from ....port.ali1977.structure import deflection, flexibility
 from ...csv_output import FULL_PRECISION, write_csv
 from ...multibody import require
 from ...scene import ReportScene
@@ -57,38 +51,13 @@ KAPPAS = (0.1, 1.0, 10.0)
 LOAD_SCALES = (1e-3, 1.0, 1e3)
 NONLINEAR_SCALES = (1.0, 0.1, 0.01)
 COMPONENTS = ("dx", "dy", "rot")
+#: the Case II bugs this scene found, each switched on alone in the corrected port (D144, D145)
+CASE2_QUIRKS = {"source": ("coupler_load_in_f7",), "cognate": ("coupler_load_in_f7", "cognate_joint_load_signs")}
 
 
 def richardson(coarse: dict, fine: dict) -> dict:
     """The h^2 error removed: (4 fine - coarse) / 3 per component, ``fine`` on half the element length."""
     return {k: (4.0 * fine[k] - coarse[k]) / 3.0 for k in COMPONENTS}
-
-
-def consistent_case2(side: str, deg) -> dict:
-    """The port's Case II (corrected) with eq. (30)/(31) made statically consistent, the
-    diagnosis of this scene's Case II differences: the coupler's load lumped at the crank pin A,
-    where the thesis puts it, carries no coupler force (f7 = 0, not P7: beta2[6, 6] = 0), and the
-    cognate's crank and coupler loads point as the d'Alembert forces -m a do (its f4, f5 act along
-    -e2, -n2, its P7 along -e3 = A'B': the port's P4, P5 and P7 are reversed there).  Everything
-    else is the port's own (``case2.joint_loads``, ``beta2``, ``flexibility``, ``deflection``).
-    ``dx``, ``dy`` (in, source frame), ``rot`` (rad) over ``deg`` (deg)."""
-    sec, lengths = EXAMPLE.section, EXAMPLE.lengths
-    deg = np.atleast_1d(np.asarray(deg, dtype=float))
-    if side == "source":
-        mech = source_linkage(deg, lengths, None, EXAMPLE.rpm, CORRECTED, "REAL").path_point(lengths.l2)
-        links, crank_sign = lengths, 1.0
-    else:
-        mech = cognate_linkage(deg, lengths, None, EXAMPLE.rpm, CORRECTED).path_point()
-        cog = mech.extra["cognate"]
-        links, crank_sign = SimpleNamespace(l1=cog.cl1, l2=cog.cl2, l3=cog.cl3, l4=cog.cl4, l5=cog.cl5), -1.0
-    loads = _case2.joint_loads(mech, links, _case2.DENSITY, sec.area, CORRECTED, coupler=1.0)
-    loads[:, 3:5] *= crank_sign
-    right = _case2.beta2(mech, CORRECTED, cognate=side == "cognate")
-    right[:, 6, 6] = 0.0
-    flex = flexibility(links.l2, links.l1, links.l3, links.l4, sec, CORRECTED)
-    d = deflection(mech.beta, flex, loads, CORRECTED, right=right)
-    c, s = math.cos(mech.frame_angle), math.sin(mech.frame_angle)
-    return {"dx": d[:, 0] * c - d[:, 1] * s, "dy": d[:, 0] * s + d[:, 1] * c, "rot": d[:, 2]}
 
 
 def _error(got: dict, ref: dict) -> tuple[float, float]:
@@ -107,16 +76,18 @@ def _mesh_rows(deg) -> np.ndarray:
 
 
 def measure(deg=ANGLES) -> dict:
-    """Every case and side, {(case, side): {...}}: "port" (corrected) and, Case II, "consistent"
-    (``consistent_case2``) over ``deg``; "exudyn" (kappa = 1, EB_ELEMENTS) and "stiff" (SHEAR_FACTOR,
-    PAIR extrapolated) over ``deg``; ("stiff", n) and ("eb", n) for n in MESHES over MESH_ANGLES."""
+    """Every case and side, {(case, side): {...}}: "port" (corrected) and, Case II, ("quirk", name)
+    the corrected port with one of CASE2_QUIRKS on, over ``deg``; "exudyn" (kappa = 1, EB_ELEMENTS)
+    and "stiff" (SHEAR_FACTOR, PAIR extrapolated) over ``deg``; ("stiff", n) and ("eb", n) for n in
+    MESHES over MESH_ANGLES."""
     results = {}
     rows = _mesh_rows(deg)
     for case in mb.CASES:
         for side in mb.SIDES:
             entry = {"port": mb.port_deflections(side, case, deg)}
             if case == 2:
-                entry["consistent"] = consistent_case2(side, deg)
+                for name in CASE2_QUIRKS[side]:
+                    entry["quirk", name] = mb.port_deflections(side, case, deg, quirks=CORRECTED.only(name, True))
             entry["exudyn"] = mb.quasi_static(side, case, deg, EB_ELEMENTS, shear_per_element=EB_KAPPA)
             pair = [mb.quasi_static(side, case, deg, n) for n in PAIR]
             entry["stiff"] = richardson(*pair)
@@ -130,48 +101,38 @@ def measure(deg=ANGLES) -> dict:
     return results
 
 
-def reference(entry: dict) -> tuple[str, dict]:
-    """What Exudyn is held against: the port, or in Case II the consistent port."""
-    return ("consistent", entry["consistent"]) if "consistent" in entry else ("port", entry["port"])
-
-
 def deflections_frame(results: dict, deg=ANGLES) -> pd.DataFrame:
     """One row per case, side and angle: dx, dy (in, source frame), rot (rad) of the port, of
-    Exudyn (kappa = 1, EB_ELEMENTS per link), of Exudyn with stiff shear (PAIR, extrapolated) and,
-    in Case II, of the consistent port."""
+    Exudyn (kappa = 1, EB_ELEMENTS per link) and of Exudyn with stiff shear (PAIR, extrapolated)."""
     frames = []
     for (case, side), entry in results.items():
         frame = {"case": case, "side": side, "input_deg": deg}
-        for label in ("port", "exudyn", "stiff", "consistent"):
-            values = entry.get(label)
+        for label in ("port", "exudyn", "stiff"):
             for k in COMPONENTS:
-                frame[f"{label}_{k}"] = values[k] if values is not None else np.full(len(deg), np.nan)
+                frame[f"{label}_{k}"] = entry[label][k]
         frames.append(pd.DataFrame(frame))
     return pd.concat(frames, ignore_index=True)
 
 
 def convergence_frame(results: dict) -> pd.DataFrame:
     """One row per case, side, shear model, mesh and scheme (raw, or extrapolated from n/2 and n),
-    over MESH_ANGLES, against the reference (the port; Case II the consistent port, and the port
-    as it is): the largest deflection (in) and rotation (rad) differences, and the deflection's
-    against the reference's peak."""
+    over MESH_ANGLES, against the corrected port: the largest deflection (in) and rotation (rad)
+    differences, and the deflection's against the port's peak."""
     rows = []
     index = _mesh_rows(ANGLES)
     for (case, side), entry in results.items():
-        references = [reference(entry)] + ([("port", entry["port"])] if case == 2 else [])
-        for ref_name, ref_full in references:
-            ref = {k: v[index] for k, v in ref_full.items()}
-            peak = _peak(ref)
-            for model, key in (("factor x EA", "stiff"), ("kappa x 12 EI / h^2", "eb")):
-                for n in MESHES:
-                    schemes = [("raw", entry[key, n])]
-                    if key == "stiff" and (key, n // 2) in entry:
-                        schemes.append(("extrapolated", richardson(entry[key, n // 2], entry[key, n])))
-                    for scheme, got in schemes:
-                        err, rot = _error(got, ref)
-                        rows.append({"case": case, "side": side, "reference": ref_name, "shear": model,
-                                     "elements": n, "scheme": scheme, "peak_in": peak, "max_error_in": err,
-                                     "relative_to_peak": err / peak, "max_rot_error_rad": rot})
+        ref = {k: v[index] for k, v in entry["port"].items()}
+        peak = _peak(ref)
+        for model, key in (("factor x EA", "stiff"), ("kappa x 12 EI / h^2", "eb")):
+            for n in MESHES:
+                schemes = [("raw", entry[key, n])]
+                if key == "stiff" and (key, n // 2) in entry:
+                    schemes.append(("extrapolated", richardson(entry[key, n // 2], entry[key, n])))
+                for scheme, got in schemes:
+                    err, rot = _error(got, ref)
+                    rows.append({"case": case, "side": side, "reference": "port", "shear": model,
+                                 "elements": n, "scheme": scheme, "peak_in": peak, "max_error_in": err,
+                                 "relative_to_peak": err / peak, "max_rot_error_rad": rot})
     return pd.DataFrame(rows)
 
 
@@ -219,8 +180,8 @@ def linearity_frame(deg: float) -> pd.DataFrame:
 
 
 def _held(convergence: pd.DataFrame) -> pd.DataFrame:
-    """The rows of each case's reference (the port; Case II the consistent port)."""
-    return convergence[convergence["reference"] == np.where(convergence["case"] == 2, "consistent", "port")]
+    """The rows held against the corrected port (every row)."""
+    return convergence[convergence["reference"] == "port"]
 
 
 def plot(convergence: pd.DataFrame, path: Path) -> None:
@@ -250,7 +211,7 @@ def plot(convergence: pd.DataFrame, path: Path) -> None:
     ax.set_xticks(list(MESHES), [str(n) for n in MESHES])
     ax.grid(alpha=0.3, which="both")
     caption = ("Exudyn's linear quasi-static path-point deflection against the corrected port's flexibility "
-               "method (Case II: the port with eq. 30/31 made statically consistent): the largest difference over "
+               "method: the largest difference over "
                f"{len(MESH_ANGLES)} crank angles relative to the peak deflection. Solid: stiff shear (1e4 EA), one "
                "mesh, falling as h^2; dotted: the same extrapolated from n/2 and n elements; dashed: shear "
                "stiffness 12 EI/h^2 per element, which cancels the linear element's h^2 error, on one mesh. What "
@@ -284,14 +245,16 @@ def run(out_dir: Path) -> dict:
 def summarise(results: dict, convergence: pd.DataFrame, shear: pd.DataFrame, linearity: pd.DataFrame,
               peak_deg: float) -> dict:
     """What the report says, as numbers: per case and side the peak (in) and the largest
-    differences (in) of Exudyn (kappa = 1), of Exudyn with stiff shear (extrapolated) against the
-    reference, and of the port as it is against Exudyn; the h^2 law's ratios; the shear and
-    linearity checks."""
+    differences (in) of Exudyn (kappa = 1) and of Exudyn with stiff shear (extrapolated) against the
+    corrected port, and in Case II of the port with each of CASE2_QUIRKS on against Exudyn; the h^2
+    law's ratios; the shear and linearity checks."""
     agreement = {}
     for key, entry in results.items():
-        ref_name, ref = reference(entry)
-        agreement[key] = {"reference": ref_name, "peak": _peak(ref), "exudyn": _error(entry["exudyn"], ref),
-                          "stiff": _error(entry["stiff"], ref), "port": _error(entry["port"], entry["exudyn"])}
+        ref = entry["port"]
+        agreement[key] = {"reference": "port", "peak": _peak(ref), "exudyn": _error(entry["exudyn"], ref),
+                          "stiff": _error(entry["stiff"], ref),
+                          "quirks": {name[1]: _error(values, entry["exudyn"]) for name, values in entry.items()
+                                     if isinstance(name, tuple) and name[0] == "quirk"}}
     held = _held(convergence)
     raw = held[(held["scheme"] == "raw") & (held["shear"] == "factor x EA")]
     ratios = []
@@ -313,8 +276,7 @@ def report(summary: dict, version: str) -> str:
              f"## Agreement ({len(ANGLES)} crank angles, every 10 deg)", "",
              f"Exudyn: {EB_ELEMENTS} elements per link, shear stiffness 12 EI/h^2 (see Shear); stiff shear: "
              f"{mb.SHEAR_FACTOR:g} EA, extrapolated from {PAIR[0]} and {PAIR[1]} elements per link. Held against "
-             "the corrected port, in Case II against the port with eq. (30)/(31) made statically consistent "
-             "(`consistent_case2`, see Case II).", "",
+             "the corrected port (in Case II since its two bugs found here were removed, see Case II).", "",
              "| case | side | held against | peak (in) | Exudyn: largest difference (in) | relative to the peak "
              "| stiff shear: largest difference (in) | relative to the peak |", "|---|---|---|---|---|---|---|---|"]
     for (case, side), a in agreement.items():
@@ -360,35 +322,36 @@ def report(summary: dict, version: str) -> str:
               + f" (Case I source at {summary['peak_deg']:g} deg, its largest deflection): in proportion to the "
               "load, the geometric nonlinearity the thesis leaves out (deflections of inches on links of 10-30 in).",
               "",
-              "## Case II: two findings in the port",
+              "## Case II: two bugs found here",
               "",
-              f"The port's Case II source differs from Exudyn by {source2['port'][0]:.1e} in "
-              f"({source2['port'][0] / source2['peak']:.0e} of its peak): eq. (30) puts a 1 in row f7 of the column of "
-              "P7, the coupler's load along the coupler from its mass lumped at the crank pin A. The column's rows "
-              "f4, f5 (-cos(t2 - t3), sin(t2 - t3)) make P7 = 1 a force -e3 on the crank pin, and beta1's row f7 "
-              "makes f7 the coupler's tension: a force at A carries no coupler force (f7 = 0), one at B a "
-              "compression (f7 = -1); +1 is neither. Exudyn with the load at A agrees with f7 = 0, and with the "
-              "load at B the difference doubles (`multibody.build(coupler_load_at='B')`).",
+              "Exudyn first disagreed with the corrected port in Case II alone; the statics of the frozen structure "
+              "(node equilibrium, tests/ali1977/test_cases23.py) sided with Exudyn twice, and both are now quirks of "
+              "the port, on in the listing's engines and off in the corrected one. Each switched on alone in the "
+              "corrected port, against Exudyn:",
               "",
-              f"The port's Case II cognate (a RECONSTRUCTION, D037) differs by {cognate2['port'][0]:.3g} in "
-              f"against a peak of {cognate2['peak']:.4g} in: its crank loads P4, P5 and its coupler load P7 point "
-              "against the d'Alembert forces -m a. The cognate's beta1 and eq. (31) take f4, f5 along -e2, -n2 and "
-              "P7 along -e3 (from A' to B'), while its loads are the source's components along +e2, +n2 and, with "
-              "case2.COGNATE_COUPLER = -1, +e3. Load by load, the port's crank and coupler contributions are "
-              "Exudyn's with the sign reversed; with the signs reversed back (and f7 = 0) they agree to rounding. "
-              "D037's search finds that the published Table II prefers the reconstruction's coupler sign (70 of 72 "
-              "cognate cells against 45): Ali's lost program most likely had it, which makes it an original bug "
-              "that the corrected engine should not keep (and tests/ali1977/test_cases23.py's column-7 check for "
-              "the cognate reads f4, f5 along +e2, +n2, the source's directions, not the cognate's).",
+              f"- `coupler_load_in_f7` (D144): {source2['quirks']['coupler_load_in_f7'][0]:.1e} in (source, "
+              f"{source2['quirks']['coupler_load_in_f7'][0] / source2['peak']:.0e} of its peak), "
+              f"{cognate2['quirks']['coupler_load_in_f7'][0]:.1e} in (cognate). Eqs. (30), (31) put a 1 in row f7 "
+              "of the column of P7, the coupler's load along the coupler from its mass lumped at the crank pin A. "
+              "The column's rows f4, f5 make a unit P7 a force -e3 on the crank pin, and beta1's row f7 makes f7 the "
+              "coupler's tension: a force at A carries no coupler force (f7 = 0), one at B a compression in the "
+              "source (f7 = -1); +1 is neither. Exudyn with the load at A agrees with f7 = 0, and with the load at B "
+              "the difference doubles (`multibody.build(coupler_load_at='B')`).",
+              f"- `cognate_joint_load_signs` (D145): {cognate2['quirks']['cognate_joint_load_signs'][0]:.3g} in "
+              f"against the cognate's peak of {cognate2['peak']:.4g} in. The reconstructed page (D037) forms the "
+              "crank loads P4, P5 as the source's components along +e2, +n2 and reverses the source's P7, while the "
+              "cognate's beta1 and eq. (31) take f4, f5 along -e2, -n2 and a unit P7 as the force -e3 at the crank "
+              "pin: load by load, its crank and coupler contributions are Exudyn's with the sign reversed. D037's "
+              "search finds that the published Table II prefers the reconstruction's signs (70 of 72 cognate "
+              "cells): Ali's lost program most likely had them, a bug of the original.",
               "",
-              "Both are left in the port (this scene does not own it) and reported. The other Case II loads "
-              "(the extender's at P, the crank's at A, the follower's along the follower at B) agree load by load; "
-              "Case II keeps the thesis's model, which drops the follower's and the coupler's load across their "
-              "axes.",
+              "The other Case II loads (the extender's at P, the crank's at A, the follower's along the follower at "
+              "B) agree load by load; Case II keeps the thesis's model, which drops the follower's and the "
+              "coupler's load across their axes.",
               "",
               "## Files", "",
               "- deflections.csv: per case, side and crank angle, dx, dy (in, the source's frame) and rot (rad) of "
-              "the port (corrected), of Exudyn, of Exudyn with stiff shear and, in Case II, of the consistent port",
+              "the port (corrected), of Exudyn and of Exudyn with stiff shear",
               f"- convergence.csv: per mesh ({', '.join(map(str, MESHES))} elements per link, {len(MESH_ANGLES)} "
               "angles), shear model and scheme, the largest differences",
               "- shear.csv: Case I source against the shear stiffness; linearity.csv: the load-factor check",
@@ -401,10 +364,11 @@ def overview(summary: dict) -> list[str]:
     worst = max(a["exudyn"][0] / a["peak"] for a in agreement.values())
     source2, cognate2 = agreement[2, "source"], agreement[2, "cognate"]
     return [f"Cases I-III, source and cognate: Exudyn's beams (shear 12 EI/h^2, {EB_ELEMENTS} elements per link) "
-            f"agree with the corrected port's flexibility method to {worst:.0e} of the peak (Case II: with eq. 30/31 "
-            "made statically consistent)",
-            f"Case II, the port as it is: eq. (30)'s f7 entry {source2['port'][0]:.1e} in (source); the cognate's "
-            f"crank and coupler loads reversed, {cognate2['port'][0]:.3g} in against a {cognate2['peak']:.3g} in peak"]
+            f"agree with the corrected port's flexibility method to {worst:.0e} of the peak",
+            f"Case II, two bugs found here (each on alone in the corrected port): eq. (30)'s f7 entry (D144) "
+            f"{source2['quirks']['coupler_load_in_f7'][0]:.1e} in (source); the cognate's crank and coupler loads "
+            f"reversed (D145), {cognate2['quirks']['cognate_joint_load_signs'][0]:.3g} in against a "
+            f"{cognate2['peak']:.3g} in peak"]
 
 
 SCENE = ReportScene(name=NAME, title=TITLE, group=GROUP, start=2, produce=run, overview=overview)
