@@ -146,13 +146,18 @@ def test_clamped_beam_with_a_tip_mass_against_euler_bernoulli():
 def test_at_20_rpm_the_dynamics_is_the_port_quasi_static_answer():
     """At 20 rpm (crank 1/3 Hz, 1/27 of the lowest first frequency) the steady state (4 elements per
     link) is periodic and within 2 % of the peak of the port's quasi-static deflection, which is its
-    300 rpm deflection times (20/300)^2 (constant crank speed: every acceleration scales so)."""
+    300 rpm deflection times (20/300)^2 (constant crank speed: every acceleration scales so); the
+    dynamic part, 1.2 % of the peak, is what the thesis's structure run dynamically gives too."""
     run = ed.steady_state(20.0, elements=4)
     assert run.period == 1 and run.periodicity < ed.PERIODICITY_IN
     at_300 = source_case1(run.deg, rpm=300.0, quirks=CORRECTED)
     expected = np.column_stack([at_300["dx"], at_300["dy"]]) * (20.0 / 300.0) ** 2
     peak = np.hypot(*expected.T).max()
     assert np.hypot(*(run.deflection - expected).T).max() < 0.02 * peak
+    # and the thesis's structure run dynamically (the port's stiffness, our time integration) is
+    # Exudyn's answer to 0.5 % of the peak (geometric nonlinearity is small at these deflections)
+    linear, _ = ed.linear_periodic([20.0], ed.ZETA, run.steps)
+    assert np.hypot(*(run.deflection - linear[0]).T).max() < 0.005 * peak
 
 
 def test_halving_the_step_or_doubling_the_mesh_barely_moves_a_steady_state():
