@@ -33,6 +33,15 @@ def version() -> str | None:
         return None
 
 
+def available() -> bool:
+    """Whether Exudyn can be imported here (``require`` would return it)."""
+    try:
+        require()
+    except ExudynMissing:
+        return False
+    return True
+
+
 def require() -> ModuleType:
     """The ``exudyn`` module, its ``utilities`` loaded (they add ``mbs.Create...``);
     ``ExudynMissing`` saying how to install it where it cannot be imported."""

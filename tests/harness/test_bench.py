@@ -86,9 +86,11 @@ def test_quick_bench_writes_its_three_files(tmp_path, monkeypatch):
     # panel per knob of three settings or more, every label placed; the others told in words
     caption = figures.caption_of(out / "bench.png")
     fronts, told = caption.split("The fronts: ")[1].split(" Without a panel: ")        # which: timing-free
+    exudyn = multibody.available()
     assert [f.split(": ")[0] for f in fronts.split("; ")] == [
-        "K.E.D. angle step", "1991 angle step", "1991 Newton tolerance", "1991 Newton precision", "CSSP positions L",
-        *(["Exudyn step (CSSP)"] if multibody.version() else [])]
+        "K.E.D. angle step", *(["Exudyn mesh (K.E.D.)", "Exudyn step (K.E.D. dynamics)"] if exudyn else []),
+        "1991 angle step", "1991 Newton tolerance", "1991 Newton precision", "CSSP positions L",
+        *(["Exudyn step (CSSP)"] if exudyn else [])]
     assert "left out" not in caption
     assert told.startswith("K.E.D. precision: double error 0 (") and "1991 Newton iteration cap: 10 failed (" in told
     with Image.open(out / "bench.png") as image:

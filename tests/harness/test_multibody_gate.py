@@ -67,3 +67,10 @@ def test_without_exudyn_a_run_skips_the_scene_and_says_why(tmp_path, hidden):
     (reference / "curves.csv.xz").write_bytes(lzma.compress(b"crank_deg\n0\n"))
     verdict = verify(out, reference.parent, scenes=[SCENE])
     assert [f.problem.split(":")[0] for f in verdict.failed] == ["skipped in the run"]
+
+
+def test_without_exudyn_the_bench_leaves_its_knobs_out(monkeypatch):
+    from linkrepro.harness import bench_run
+    monkeypatch.setitem(sys.modules, "exudyn", None)
+    assert not multibody.available()
+    assert not [knob.name for knob in bench_run.knobs(quick=True) if "Exudyn" in knob.name]

@@ -1,7 +1,8 @@
 """Ali (1977)'s part of ``linkrepro bench`` (the machine: ``harness/bench.py``): the cost of
 K.E.D. Cases I-III, source and cognate, at the tables' 19 angles and 3,601 angles against the
 listings' flop counts (``KED_*``); the knobs K.E.D. angle step and REAL*4 storage; the sweep of
-Case III's sub-elements and mass rule (``case3_convergence.case3_data``)."""
+Case III's sub-elements and mass rule (``case3_convergence.case3_data``); Exudyn's mesh (quasi-static) and step (elastodynamics),
+where Exudyn is installed."""
 from __future__ import annotations
 
 from typing import Callable
@@ -12,6 +13,7 @@ from ....legacy import ali1977
 from ....port.ali1977 import CORRECTED, PRINTED, case2, case3, cognate_case1, source_case1
 from ...bench import TRANSCENDENTAL, Computation, Knob, Sweep, crank_grid, step_label, relative_error, with_pareto_front, mprd
 from ...bench import series_of_setting
+from ... import multibody as exudyn_gate
 from .case3_convergence import case3_data
 
 #: four-bar position (half-angle), velocity, acceleration, beta by Cramer's rule (statements
@@ -99,10 +101,45 @@ def ked_precision_knob() -> Knob:
                 lambda r: len(r[0]))
 
 
+#: the crank speed of the Exudyn step knob (rpm): the sweep's lower half, runs of a second
+EXUDYN_STEP_RPM = 100.0
+
+
+def _largest_deflection_error(result, port) -> tuple[float, str]:
+    """Largest |dx, dy - port's| (in) over the angles."""
+    return float(max(np.abs(result[k] - port[k]).max() for k in ("dx", "dy"))), ""
+
+
+def exudyn_knobs(quick: bool) -> list[Knob]:
+    """Case I source in Exudyn: the mesh of the quasi-static beams against the corrected port,
+    and the step of the 100 rpm steady state against the finest; none without Exudyn."""
+    if not exudyn_gate.available():
+        return []
+    from . import elastodynamics, multibody
+    deg = np.arange(0.0, 361.0, 10.0)
+    meshes = (2,) if quick else (2, 4, 8, 16, 32)
+    mesh = {f"{n} per link, stiff shear": (lambda n=n: multibody.quasi_static("source", 1, deg, n)) for n in meshes}
+    mesh["2 per link, shear 12 EI/h^2"] = lambda: multibody.quasi_static("source", 1, deg, 2, shear_per_element=1.0)
+    mesh["port_corrected"] = lambda: multibody.port_deflections("source", 1, deg)
+    steps = (90, 180, 360) if quick else (90, 180, 360, 720, 1440)
+    step = {f"{n} per rev": (lambda n=n: elastodynamics.steady_state(EXUDYN_STEP_RPM, steps=n, cached=False))
+            for n in steps}
+    return [
+        Knob("Exudyn mesh (K.E.D.)", "exudyn", "in",
+             "Case I source, linear quasi-static deflection at 37 angles from Exudyn's beams, elements per link "
+             "(stiff shear: the elements' c h^2 error; shear 12 EI/h^2 cancels it), against the corrected port "
+             "(the reference)", mesh, "port_corrected", _largest_deflection_error, lambda r: len(deg)),
+        Knob("Exudyn step (K.E.D. dynamics)", "exudyn", "in",
+             f"Case I source, the {EXUDYN_STEP_RPM:g} rpm elastodynamic steady state, steps per revolution: the "
+             f"largest distance from the {steps[-1]}-step orbit", step, f"{steps[-1]} per rev",
+             lambda r, ref: (elastodynamics.orbit_change(r, ref), ""), lambda r: r.steps * r.revolutions),
+    ]
+
+
 def knobs(quick: bool) -> list[Knob]:
-    """The angle step (``quick``: three settings) and REAL*4 storage."""
+    """The angle step (``quick``: three settings), REAL*4 storage, Exudyn's mesh and step."""
     steps = (20.0, 5.0, 1.0) if quick else (20.0, 10.0, 5.0, 2.0, 1.0, 0.5, 0.2, 0.1, 0.05, 0.02, 0.01)
-    return [ked_step_knob(steps), ked_precision_knob()]
+    return [ked_step_knob(steps), ked_precision_knob(), *exudyn_knobs(quick)]
 
 
 CASE3 = "Case III sub-elements n and mass rule"

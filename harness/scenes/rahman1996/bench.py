@@ -80,7 +80,7 @@ def _against_port(result, port) -> tuple[float, str]:
 def exudyn_step(quick: bool) -> list[Knob]:
     """Exudyn's step against the corrected port's closed-loop columns (before masses, the port's
     universal crank pin); none where Exudyn is not installed."""
-    if exudyn_gate.version() is None:
+    if not exudyn_gate.available():
         return []
     steps = (1.0, 0.5) if quick else multibody.STEPS
     masses = Constants.of(CsspInputs(), False).point_masses
