@@ -44,12 +44,14 @@ def test_a_printed_line_and_its_seed_line_say_the_same(listing):
 
 def cited_pairs():
     """(entry, listing, printed line numbers, seed line numbers) where an entry's `where` names
-    as many printed lines as seed lines, one by one."""
+    as many printed lines as seed lines, one by one: its k-th printed citation against its k-th
+    seed citation."""
     for entry in register.load().values():
         seeds = re.findall(r"seed \d{3} lines? (\d+(?:\s*(?:-|,|and)\s*\d+)*)", entry.where)
-        for tier, listing, numbers in L._CITED.findall(entry.where):
-            if tier == "printed" and seeds and len(L._numbers(numbers)) == len(L._numbers(seeds[0])):
-                yield entry.id, listing, L._numbers(numbers), L._numbers(seeds[0])
+        printed = [(listing, numbers) for tier, listing, numbers in L._CITED.findall(entry.where) if tier == "printed"]
+        for (listing, numbers), seed in zip(printed, seeds):
+            if len(L._numbers(numbers)) == len(L._numbers(seed)):
+                yield entry.id, listing, L._numbers(numbers), L._numbers(seed)
 
 
 def test_the_register_cites_the_seed_lines_the_alignment_finds():
