@@ -81,7 +81,7 @@ def test_free_vibration_of_the_frozen_linkage(deg):
     decays with zeta1 = ZETA f1 / DAMPING_HZ (stiffness-proportional damping) to 2 %."""
     model = mb.build("source", deg, 1, ed.ELEMENTS, shear_per_element=ed.SHEAR_PER_ELEMENT, load_scale=1e-3)
     equilibrium = model.linear_deflection()[:2]
-    ed._damp(model, ed.damping_beta(ed.ZETA))
+    model.damp(ed.damping_beta(ed.ZETA))
     track = []
     model.mbs.SetPreStepUserFunction(
         lambda mbs, t: track.append(mbs.GetNodeOutput(model.path_node, exudyn.OutputVariableType.Displacement)[:2])

@@ -46,13 +46,13 @@ import pandas as pd
 
 from ....port.ali1977.case1 import cognate_case1, source_case1, source_mechanics
 from ....port.ali1977.cognate import cognate_mechanics
-from ....port.ali1977.case2 import DENSITY
 from ....port.ali1977.data import EXAMPLE
 from ....port.ali1977.quirks import CORRECTED
 from ....port.ali1977.structure import GRAVITY_IN, flexibility
 from ... import multibody, progress
 from ...csv_output import FULL_PRECISION, write_csv
 from ...scene import ReportScene
+from . import multibody as mb
 
 NAME = "ali1977-elastodynamics"
 TITLE = "Ali (1977): the quasi-static K.E.D. deflections against the four-bar's elastodynamics (Exudyn)"
@@ -210,11 +210,6 @@ def linear_periodic(rpms, zeta: float, steps: int = LINEAR_STEPS, side: str = "s
 
 # --- Exudyn, on the builder's model -------------------------------------------------------------
 
-def _mb():
-    from . import multibody as mb          # imports Exudyn's utilities: only once it is known to be there
-    return mb
-
-
 def _jacobian(model) -> np.ndarray:
     """Exudyn's static Jacobian (ODE2 and constraint rows) of a frozen model at its reference."""
     exu = multibody.require()
@@ -232,7 +227,6 @@ def exudyn_stiffness(deg: float, elements: int = ELEMENTS, side: str = "source")
     condensed onto the path point's x, y (the links are massless, so this is exact for the
     frequencies); and, as a check of the condensation, the largest difference (in) between the
     compliance times the Case I load and the builder's own linear deflection under it."""
-    mb = _mb()
     model = mb.build(side, float(deg), CASE, elements, masses="none", shear_per_element=SHEAR_PER_ELEMENT)
     jacobian = _jacobian(model)
     index = model.mbs.GetNodeODE2Index(model.path_node)
@@ -251,7 +245,6 @@ def exudyn_static(deg: float, elements: int = ELEMENTS, load_steps: int = LOAD_S
     """The path point's deflection (dx, dy), in, under the Case I load at ``deg`` (300 rpm):
     Exudyn's linear answer and its geometrically nonlinear static solve (``load_steps`` load
     steps, Newton to NEWTON_TOLERANCE)."""
-    mb = _mb()
     model = mb.build(side, float(deg), CASE, elements, masses="none", shear_per_element=SHEAR_PER_ELEMENT)
     linear = model.linear_deflection()[:2]
     settings = model.settings
@@ -306,12 +299,11 @@ def _steady_state(rpm: float, elements: int, steps: int, zeta: float, start_deg:
     the beams' mass as a fraction of the links' own (0: Case I's massless links); ``side`` the
     source four-bar or its cognate."""
     exu = multibody.require()
-    mb = _mb()
     model = mb.build(side, float(start_deg), CASE, elements, mode="driven", shear_per_element=SHEAR_PER_ELEMENT)
-    _damp(model, damping_beta(zeta))
+    model.damp(damping_beta(zeta))
     if link_mass:
-        _give_mass(model, link_mass)
-    _set_speed(model, rpm)
+        model.give_mass(link_mass)
+    model.set_speed(rpm)
     mbs, node = model.mbs, model.path_node
     positions: list = []
     found = {"period": 0, "diffs": (math.inf, math.inf)}
@@ -359,43 +351,6 @@ def _steady_state(rpm: float, elements: int, steps: int, zeta: float, start_deg:
     one, two = found["diffs"]
     return SteadyState(rpm, elements, steps, zeta, start_deg, deg, last, n // steps, one, two, found["period"],
                        link_mass=link_mass, side=side)
-
-
-def _damp(model, beta: float) -> None:
-    """Every beam of ``model`` damped: bending, axial and shear damping beta times the stiffness.
-    (Not in the builder, which has no damping: added here to its model.)"""
-    mbs = model.mbs
-    for item in range(mbs.systemData.NumberOfObjects()):
-        beam = mbs.GetObject(item)
-        if beam["objectType"] == "BeamGeometricallyExact2D":
-            for what in ("bending", "axial", "shear"):
-                mbs.SetObjectParameter(item, f"{what}Damping", beta * beam[f"{what}Stiffness"])
-
-
-def _give_mass(model, fraction: float) -> None:
-    """Every beam of ``model`` given ``fraction`` of the links' own mass per length and rotary
-    inertia (``case2.DENSITY`` * A / g, * I / g).  (Not in the builder, whose distributed masses are
-    the links' whole: added here to its model.)"""
-    mbs, sec = model.mbs, EXAMPLE.section
-    for item in range(mbs.systemData.NumberOfObjects()):
-        if mbs.GetObject(item)["objectType"] == "BeamGeometricallyExact2D":
-            mbs.SetObjectParameter(item, "massPerLength", fraction * DENSITY * sec.area / GRAVITY_IN)
-            mbs.SetObjectParameter(item, "crossSectionInertia", fraction * DENSITY * sec.inertia / GRAVITY_IN)
-
-
-def _set_speed(model, rpm: float) -> None:
-    """The driven ``model`` (built at the example's 300 rpm) turned at ``rpm``: its nodes' initial
-    velocities and its crank drive scaled by rpm / 300 (at constant crank speed every rigid
-    velocity is proportional to it).  (The builder has no speed: added here to its model.)"""
-    mbs, scale = model.mbs, rpm / EXAMPLE.rpm
-    if not math.isclose(model.rigid.om2, 2.0 * math.pi * EXAMPLE.rpm / 60.0, rel_tol=1e-12):   # the input's speed
-        raise ValueError(f"the builder's crank speed {model.rigid.om2} rad/s is not the example's {EXAMPLE.rpm} rpm")
-    for node in range(mbs.systemData.NumberOfNodes()):
-        data = mbs.GetNode(node)
-        if data["nodeType"] == "RigidBody2D":
-            mbs.SetNodeParameter(node, "initialVelocities", [scale * v for v in data["initialVelocities"]])
-    om2 = scale * model.rigid.om2
-    mbs.SetObjectParameter(model.crank_constraint, "offsetUserFunction", lambda mbs_, t, item, offset: om2 * t)
 
 
 # --- the study ------------------------------------------------------------------------------------

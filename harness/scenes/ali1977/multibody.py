@@ -315,6 +315,43 @@ class Model:
         """The path point's current position (x, y, in inches, source frame) in Exudyn's state."""
         return np.array(self.mbs.GetNodeOutput(self.path_node, require().OutputVariableType.Position))[:2]
 
+    def _beams(self):
+        """The numbers of the model's beam elements."""
+        return [item for item in range(self.mbs.systemData.NumberOfObjects())
+                if self.mbs.GetObject(item)["objectType"] == "BeamGeometricallyExact2D"]
+
+    def damp(self, beta: float) -> None:
+        """Every beam damped: its bending, axial and shear damping ``beta`` (s) times its stiffness
+        (stiffness-proportional, Kelvin-Voigt)."""
+        for item in self._beams():
+            beam = self.mbs.GetObject(item)
+            for what in ("bending", "axial", "shear"):
+                self.mbs.SetObjectParameter(item, f"{what}Damping", beta * beam[f"{what}Stiffness"])
+
+    def give_mass(self, fraction: float) -> None:
+        """Every beam given ``fraction`` of the links' own mass per length and rotary inertia
+        (``case2.DENSITY`` * A / g, * I / g; lbf s^2/in^2, lbf s^2)."""
+        sec = EXAMPLE.section
+        for item in self._beams():
+            self.mbs.SetObjectParameter(item, "massPerLength", fraction * _case2.DENSITY * sec.area / GRAVITY_IN)
+            self.mbs.SetObjectParameter(item, "crossSectionInertia", fraction * _case2.DENSITY * sec.inertia / GRAVITY_IN)
+
+    def set_speed(self, rpm: float) -> None:
+        """A driven model (built at the example's speed) turned at ``rpm``: its nodes' initial
+        velocities and its crank drive scaled by rpm / EXAMPLE.rpm (at constant crank speed every
+        rigid velocity is proportional to it)."""
+        if self.mode != "driven":
+            raise ValueError("set_speed needs the driven linkage (mode='driven')")
+        scale = rpm / EXAMPLE.rpm
+        if not math.isclose(self.rigid.om2, 2.0 * math.pi * EXAMPLE.rpm / 60.0, rel_tol=1e-12):
+            raise ValueError(f"the model's crank speed {self.rigid.om2} rad/s is not the example's {EXAMPLE.rpm} rpm")
+        for node in range(self.mbs.systemData.NumberOfNodes()):
+            data = self.mbs.GetNode(node)
+            if data["nodeType"] == "RigidBody2D":
+                self.mbs.SetNodeParameter(node, "initialVelocities", [scale * v for v in data["initialVelocities"]])
+        om2 = scale * self.rigid.om2
+        self.mbs.SetObjectParameter(self.crank_constraint, "offsetUserFunction", lambda mbs, t, item, offset: om2 * t)
+
 
 def rigid_path_point(side: str, deg) -> np.ndarray:
     """The rigid path point (2, N) in inches, source frame, at the crank angles ``deg`` (deg):
