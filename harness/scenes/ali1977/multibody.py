@@ -31,7 +31,9 @@ Two modes:
   frequencies (with ``masses``).
 - ``mode="driven"``: the crank's root rotation prescribed, phi = om2 * t (a coordinate
   constraint with a time offset), initial velocities the rigid linkage's, no applied loads:
-  the masses' inertia loads the links (time integration with ``mbs.SolveDynamic``).
+  the masses' inertia loads the links (time integration with ``mbs.SolveDynamic``);
+  ``Model.set_speed`` turns it at another speed, ``Model.damp`` damps the beams,
+  ``Model.give_mass`` gives them a fraction of the links' mass.
 
 Loads (frozen mode; the corrected port's, one physical force each, lbf):
 
