@@ -89,7 +89,8 @@ def _column_head(scene, column: str) -> dict:
     return {"id": column, "words": what.words, "unit": what.unit}
 
 
-def table_view(scene, diff: pd.DataFrame, register: dict[str, Deviation], blocks: dict, cells: dict) -> dict:
+def table_view(scene, diff: pd.DataFrame, register: dict[str, Deviation], blocks: dict, cells: dict,
+               labels: dict) -> dict:
     """The published table as printed (rows, columns in words and unit, what each cell counts
     as per engine: CELL_STATUSES, and the printed digits each engine reproduces) for the
     template; each cell's trail data goes into ``cells`` and its listing lines into ``blocks``."""
@@ -112,20 +113,22 @@ def table_view(scene, diff: pd.DataFrame, register: dict[str, Deviation], blocks
             engines = {}
             for r in here:
                 ids = r["register_ids"] if isinstance(r["register_ids"], str) else ""
-                engines[r["engine"]] = {"status": r["shown"], "kind": r["kind"], "value": _number(float(r["value"])),
-                                        "difference": _number(float(r["abs_diff"])),
-                                        "digits": digits_reproduced(float(r["abs_diff"]), float(r["half_unit"]), printed),
-                                        "ids": ids.split()}
+                record = {"status": r["shown"], "kind": r["kind"], "value": _number(float(r["value"])),
+                          "difference": _number(float(r["abs_diff"])),
+                          "digits": digits_reproduced(float(r["abs_diff"]), float(r["half_unit"]), printed),
+                          "ids": ids.split()}
+                # the page's script reads an absent field as empty: leaving them out keeps the page small
+                engines[r["engine"]] = {k: v for k, v in record.items() if v is not None and v != "" and v != []}
             cell_id = f"{scene.name}|{row_key}|{column}"
             lines = tuple(line for s in scene.statements(str(first[key]), column) for line in listing_lines.find(s))
             block = blocks.setdefault(lines, f"L{len(blocks)}")
             cells[cell_id] = {"scene": scene.name, "row": row_key, "column": column,
-                              "words": scene.describe(column).label, "published": text,
+                              "label": labels.setdefault(scene.describe(column).label, len(labels)), "published": text,
                               "half_unit": float(first["half_unit"]), "printed_digits": printed,
                               "engines": engines, "lines": block}
             shown.append({"id": cell_id, "text": text, "printed": printed, "column": column,
                           "status": {e: v["status"] for e, v in engines.items()},
-                          "digits": {e: v["digits"] for e, v in engines.items()}})
+                          "digits": {e: v.get("digits") for e, v in engines.items()}})
         rows.append({"key": row_key, "cells": shown})
     keys = [_column_head(scene, k) for k in scene.keys]
     return {"key_heads": keys, "columns": [_column_head(scene, c) for c in scene.values if c in set(diff["column"])],
@@ -152,7 +155,7 @@ def figures(folder: Path) -> list[dict]:
     return shown
 
 
-def _scene_view(folder: "Folder", section: "SceneSection", register, blocks, cells) -> dict:
+def _scene_view(folder: "Folder", section: "SceneSection", register, blocks, cells, labels) -> dict:
     view = {"kind": "scene", "name": section.name, "title": section.title, "problem": section.problem,
             "outcome": section.outcome, "figures": [], "table": None, "overview": "", "counts": []}
     if section.outcome is None:
@@ -161,7 +164,7 @@ def _scene_view(folder: "Folder", section: "SceneSection", register, blocks, cel
     view["figures"] = figures(here) if here.is_dir() else []
     if section.name in TABLES and (here / "diff.csv").is_file():
         diff = read_diff(TABLES[section.name], folder.out_dir)
-        view["table"] = table_view(SCENES[section.name], diff, register, blocks, cells)
+        view["table"] = table_view(SCENES[section.name], diff, register, blocks, cells, labels)
         if section.outcome.counts is not None:
             view["counts"] = overview(section.outcome.counts)
         view["used"] = {i for ids in diff["register_ids"].fillna("") for i in str(ids).split()}
@@ -186,7 +189,8 @@ def render(folder: "Folder") -> str:
     register = register_mod.load()
     blocks: dict[tuple, str] = {}
     cells: dict[str, dict] = {}
-    sections = [_scene_view(folder, s, register, blocks, cells) if s.kind == "scene" else _output_view(folder, s)
+    labels: dict[str, int] = {}          # the columns' words, each once (a cell holds its index)
+    sections = [_scene_view(folder, s, register, blocks, cells, labels) if s.kind == "scene" else _output_view(folder, s)
                 for s in folder.sections]
     used = set().union(*(s.get("used", set()) for s in sections))
     totals = folder.cell_totals()
@@ -200,4 +204,5 @@ def render(folder: "Folder") -> str:
         made=(manifest.TITLE, markdown_html("\n".join(manifest.summary(folder.out_dir)))),
         entries=[_entry(register[i]) for i in sorted(used) if i in register],
         blocks={block: [_line(line) for line in lines] for lines, block in blocks.items()},
-        cells_json=json.dumps(cells, separators=(",", ":")).replace("</", "<\\/"))
+        cells_json=json.dumps(cells, separators=(",", ":")).replace("</", "<\\/"),
+        labels_json=json.dumps(list(labels), separators=(",", ":")).replace("</", "<\\/"))

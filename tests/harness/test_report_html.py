@@ -20,7 +20,7 @@ from pathlib import Path
 
 import pytest
 
-from linkrepro.harness import register, report_folder
+from linkrepro.harness import describe, register, report_folder
 from linkrepro.harness.bench_run import run_bench
 from linkrepro.harness.run import reproduce
 
@@ -132,6 +132,14 @@ def test_clicking_a_misprinted_cell_shows_its_trail_in_chromium(run_dir):
         shown = panel.text
         assert misprint_ids() and all(i in shown for i in misprint_ids())
         assert f"legacy/printed/ali1977_case1_source.f:{number}" in shown and text in shown
+        assert describe(SCENE, COLUMN).label in shown      # the column's words (the page keeps each once)
+
+        # a cell the printed engine does not produce: its row says so (fields left out of the page's data)
+        rigid = browser.find_element(By.CSS_SELECTOR, f'td.cell[data-cell="{SCENE}|0|rigid_x"]')
+        browser.execute_script("arguments[0].scrollIntoView({block: 'center'})", rigid)
+        rigid.click()
+        printed_row = [r.text for r in panel.find_elements(By.CSS_SELECTOR, "tr") if r.text.startswith("printed")]
+        assert printed_row == ["printed not produced - not-produced"]
 
         # the selector recolours: row 0's source dX matches for legacy, not for the corrected port
         other = browser.find_element(By.CSS_SELECTOR, f'td.cell[data-cell="{SCENE}|0|{COLUMN}"]')
