@@ -23,6 +23,7 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
 from linkrepro.harness.scenes.ali1977 import elastodynamics as ed  # noqa: E402
+from linkrepro.harness.scenes.ali1977 import structure_dynamics as sd  # noqa: E402
 from linkrepro.harness.scenes.ali1977 import multibody as mb  # noqa: E402
 from linkrepro.port.ali1977.case1 import source_case1, source_mechanics  # noqa: E402
 from linkrepro.port.ali1977.cognate import cognate_mechanics  # noqa: E402
@@ -90,9 +91,9 @@ def test_free_vibration_of_the_frozen_linkage(deg):
     step = 5e-4
     model.mbs.SolveDynamic(_settings(model.settings, step, 1.5))
     stiffness = ed.port_stiffness([deg])[0]
-    w2, modes = np.linalg.eigh(stiffness / ed.MASS)
+    w2, modes = np.linalg.eigh(stiffness / sd.MASS)
     f1 = math.sqrt(w2[0]) / (2.0 * math.pi)
-    zeta1 = ed.ZETA * f1 / ed.DAMPING_HZ
+    zeta1 = ed.ZETA * f1 / sd.DAMPING_HZ
     frequency, zeta = _decay((np.asarray(track) - equilibrium) @ modes[:, 0], step)
     assert frequency == pytest.approx(f1 * math.sqrt(1.0 - zeta1 ** 2), rel=3e-3)
     assert zeta == pytest.approx(zeta1, rel=2e-2)
@@ -137,7 +138,7 @@ def test_clamped_beam_with_a_tip_mass_against_euler_bernoulli():
     mbs.SolveDynamic(_settings(settings, step, 0.5))
     tip = force * length ** 3 / (3.0 * ei)                        # the static tip deflection
     closed = math.sqrt(3.0 * ei / (mass * length ** 3)) / (2.0 * math.pi)
-    zeta_closed = ed.ZETA * closed / ed.DAMPING_HZ
+    zeta_closed = ed.ZETA * closed / sd.DAMPING_HZ
     frequency, zeta = _decay(np.asarray(track) - tip, step)
     assert frequency == pytest.approx(closed * math.sqrt(1.0 - zeta_closed ** 2), rel=3e-3)
     assert zeta == pytest.approx(zeta_closed, rel=2e-2)
@@ -184,16 +185,16 @@ def test_linear_periodic_is_where_a_time_march_from_rest_ends():
     assert decay[0] < 0.5
     deg = np.arange(steps) * 360.0 / steps
     stiffness = ed.port_stiffness(deg)
-    load = -ed.MASS * source_mechanics(deg, rpm=rpm, quirks=CORRECTED).acc
+    load = -sd.MASS * source_mechanics(deg, rpm=rpm, quirks=CORRECTED).acc
     beta, h = ed.damping_beta(ed.ZETA), 60.0 / rpm / steps
     u, v = np.zeros(2), np.zeros(2)
-    a = load[0] / ed.MASS
+    a = load[0] / sd.MASS
     for n in range(40 * steps):
         j = (n + 1) % steps
         k = stiffness[j]
         # m a1 + beta K v1 + K u1 = P1, u1 = u + h/2 (v + v1), v1 = v + h/2 (a + a1)
-        lhs = ed.MASS * 4.0 / h ** 2 * np.eye(2) + beta * k * 2.0 / h + k
-        rhs = load[j] + ed.MASS * (4.0 / h ** 2 * u + 4.0 / h * v + a) + beta * k @ (2.0 / h * u + v)
+        lhs = sd.MASS * 4.0 / h ** 2 * np.eye(2) + beta * k * 2.0 / h + k
+        rhs = load[j] + sd.MASS * (4.0 / h ** 2 * u + 4.0 / h * v + a) + beta * k @ (2.0 / h * u + v)
         u1 = np.linalg.solve(lhs, rhs)
         v1 = 2.0 / h * (u1 - u) - v
         a = 4.0 / h ** 2 * (u1 - u) - 4.0 / h * v - a

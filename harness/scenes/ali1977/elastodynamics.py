@@ -44,30 +44,21 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from ....port.ali1977.case1 import cognate_case1, source_case1, source_mechanics
-from ....port.ali1977.cognate import cognate_mechanics
-from ....port.ali1977.data import EXAMPLE
+from ....port.ali1977.case1 import source_mechanics
 from ....port.ali1977.quirks import CORRECTED
-from ....port.ali1977.structure import GRAVITY_IN, flexibility
 from ... import multibody, progress
 from ...csv_output import FULL_PRECISION, write_csv
 from ...scene import ReportScene
 from . import multibody as mb
+from .structure_dynamics import (CASE, ERROR_LEVEL, LINEAR_STEPS, RPM, SIDES, ZETA, ZETA_LOW, crossing, damping_beta,
+                                 error_of, frequencies_of, linear_periodic, linear_sweep, port_stiffness, quasi_static,
+                                 rigid_path_point)
 
 NAME = "ali1977-elastodynamics"
 TITLE = "Ali (1977): the quasi-static K.E.D. deflections against the four-bar's elastodynamics (Exudyn)"
 GROUP = NAME
 #: the longest scene: it starts first
 START = 0
-#: the source four-bar and its crossed cognate (the same path point, other links)
-SIDES, CASE = ("source", "cognate"), 1
-#: the design speed, rev/min
-RPM = 300.0
-#: the path point's mass, lbf s^2/in
-MASS = EXAMPLE.mass_lbf / GRAVITY_IN
-#: modal damping ratio at DAMPING_HZ (stiffness-proportional), and the lower one of the study
-ZETA, ZETA_LOW = 0.05, 0.02
-DAMPING_HZ = 10.0
 #: beam elements per link (every link alike): measured, 8 -> 16 moves the 300 rpm steady state
 #: by 0.004 in, 0.1 % of its peak (``convergence.csv``)
 ELEMENTS = 8
@@ -97,15 +88,11 @@ FREQUENCY_ANGLES = np.arange(0.0, 360.0, 10.0)
 STATIC_ANGLES = np.arange(0.0, 360.0, 10.0)
 LOAD_STEPS = 4
 STATIC_CHECK_EVERY = 3
-#: the speed sweep in Exudyn, rev/min; the linear dynamics of the thesis's structure every rev/min
+#: the speed sweep in Exudyn, rev/min
 SWEEP_RPM = (30.0, 40.0, 50.0, 55.0, 60.0, 65.0, 70.0, 80.0, 90.0, 100.0, 120.0, 150.0, 200.0, 250.0, 300.0,
              350.0, 400.0)
-LINEAR_RPM = np.arange(20.0, 401.0, 1.0)
 #: the cognate's sweep in Exudyn (fewer speeds: the cost)
 COGNATE_SWEEP_RPM = (40.0, 50.0, 60.0, 70.0, 80.0, 100.0, 150.0, 200.0, 300.0, 400.0)
-LINEAR_STEPS = 720
-#: the quasi-static answer's error, as a fraction of its peak deflection, that sets the speed limit
-ERROR_LEVEL = 0.10
 #: the speed of the step and mesh checks near the limit, rev/min
 LIMIT_CHECK_RPM = 60.0
 #: the links' mass, as a fraction of their own (aluminium, ``case2.DENSITY``), given them where the
@@ -116,96 +103,9 @@ REGULARIZING_MASS = 0.01
 LOW_NAME = f"zeta {ZETA_LOW:g}, links at {REGULARIZING_MASS:.0%} of their mass"
 
 
-def damping_beta(zeta: float) -> float:
-    """The stiffness-proportional damping coefficient (s): zeta at DAMPING_HZ."""
-    return 2.0 * zeta / (2.0 * math.pi * DAMPING_HZ)
-
-
 def steps_per_rev(rpm: float) -> int:
     """Time steps per revolution at ``rpm``: STEPS_PER_REV, more below 120 and above 300 rpm."""
     return STEPS_PER_REV * max(1, math.ceil(120.0 / rpm), math.ceil(rpm / RPM))
-
-
-# --- the thesis's structure (the corrected port) ---------------------------------------------------
-
-def _mechanics(deg, side: str, rpm: float = RPM):
-    """The corrected port's Mechanics of ``side`` over ``deg`` (its own frame) and the rotation
-    (2x2) that turns its own frame into the source's (D025's turn; the identity for the source)."""
-    deg = np.asarray(deg, dtype=float)
-    if side == "source":
-        return source_mechanics(deg, rpm=rpm, quirks=CORRECTED), np.eye(2)
-    if side != "cognate":
-        raise ValueError(f"side must be one of {SIDES}, got {side!r}")
-    mech = cognate_mechanics(deg, rpm=rpm, quirks=CORRECTED)
-    c, s = math.cos(mech.frame_angle), math.sin(mech.frame_angle)
-    return mech, np.array([[c, -s], [s, c]])
-
-
-def port_stiffness(deg, side: str = "source") -> np.ndarray:
-    """The path point's 2x2 stiffness (lbf/in, source frame) over ``deg``: the inverse of the x, y
-    block of the port's compliance beta^T F beta (eq. 6, corrected; no load on the rotation, as
-    Case I)."""
-    mech, turn = _mechanics(deg, side)
-    flex = flexibility(*mech.flex_lengths, EXAMPLE.section, CORRECTED)
-    compliance = np.swapaxes(mech.beta, -1, -2) @ flex @ mech.beta
-    return turn @ np.linalg.inv(compliance[:, :2, :2]) @ turn.T
-
-
-def frequencies_of(stiffness: np.ndarray) -> np.ndarray:
-    """The two natural frequencies (Hz) of the path-point mass on the stiffness (.., 2, 2)."""
-    return np.sqrt(np.linalg.eigvalsh(stiffness / MASS)) / (2.0 * math.pi)
-
-
-def _case1(deg, rpm: float, side: str) -> dict:
-    call = source_case1 if side == "source" else cognate_case1
-    return call(np.asarray(deg, dtype=float), rpm=rpm, quirks=CORRECTED)
-
-
-def quasi_static(deg, rpm: float, side: str = "source") -> np.ndarray:
-    """The corrected port's Case I deflection (dx, dy) (N, 2), in, source frame, at ``rpm``."""
-    out = _case1(deg, rpm, side)
-    return np.column_stack([out["dx"], out["dy"]])
-
-
-def rigid_path_point(deg, rpm: float = RPM, side: str = "source") -> np.ndarray:
-    """The rigid path point (x, y) (N, 2), in, source frame, from the corrected port."""
-    out = _case1(deg, rpm, side)
-    return np.column_stack([out["xp"], out["yp"]] if side == "source" else [out["cxp"], out["cyp"]])
-
-
-def linear_periodic(rpms, zeta: float, steps: int = LINEAR_STEPS, side: str = "source") -> tuple[np.ndarray, np.ndarray]:
-    """The thesis's structure run dynamically: m u'' + beta K u' + K u = -m a over a revolution at
-    each of ``rpms`` (S,), K = ``port_stiffness``, a the port's rigid acceleration, beta =
-    ``damping_beta(zeta)``; the trapezoidal rule (Newmark's average acceleration) in ``steps``
-    steps per revolution, and its periodic solution: the fixed point of the revolution's affine
-    map.  Returns (the deflections (S, steps, 2) at deg = 360 k / steps, the map's spectral
-    radius (S,): how fast a start-up transient dies per revolution)."""
-    rpms = np.atleast_1d(np.asarray(rpms, dtype=float))
-    deg = np.arange(steps) * 360.0 / steps
-    stiffness = port_stiffness(deg, side)
-    load = np.stack([-MASS * (lambda mech, turn: mech.acc @ turn.T)(*_mechanics(deg, side, r)) for r in rpms])  # (S, N, 2)
-    beta, eye = damping_beta(zeta), np.eye(2)
-    h = (60.0 / rpms / steps)[:, None, None]
-    maps, phi, g = [], np.broadcast_to(np.eye(4), (len(rpms), 4, 4)).copy(), np.zeros((len(rpms), 4))
-    for i in range(steps):
-        j = (i + 1) % steps
-        k0, k1 = stiffness[i] / MASS, stiffness[j] / MASS
-        # u1 - h/2 v1 = u0 + h/2 v0;  v1 + h/2 (beta K1 v1 + K1 u1)/m - h/2 P1/m = v0 + h/2 a0
-        lhs = np.block([[np.broadcast_to(eye, h.shape[:1] + (2, 2)), -h / 2 * eye],
-                        [h / 2 * k1, eye + h / 2 * beta * k1]])
-        rhs = np.block([[np.broadcast_to(eye, h.shape[:1] + (2, 2)), h / 2 * eye],
-                        [-h / 2 * k0, eye - h / 2 * beta * k0]])
-        force = np.concatenate([np.zeros((len(rpms), 2)), h[:, 0] / 2 * (load[:, i] + load[:, j]) / MASS], axis=1)
-        step_map, step_shift = np.linalg.solve(lhs, rhs), np.linalg.solve(lhs, force[..., None])[..., 0]
-        maps.append((step_map, step_shift))
-        phi = step_map @ phi
-        g = np.einsum("sij,sj->si", step_map, g) + step_shift
-    x = np.linalg.solve(np.eye(4) - phi, g[..., None])[..., 0]
-    out = np.empty((len(rpms), steps, 2))
-    for i, (step_map, step_shift) in enumerate(maps):
-        out[:, i] = x[:, :2]
-        x = np.einsum("sij,sj->si", step_map, x) + step_shift
-    return out, np.abs(np.linalg.eigvals(phi)).max(axis=1)
 
 
 # --- Exudyn, on the builder's model -------------------------------------------------------------
@@ -355,24 +255,6 @@ def _steady_state(rpm: float, elements: int, steps: int, zeta: float, start_deg:
 
 # --- the study ------------------------------------------------------------------------------------
 
-def error_of(deflection: np.ndarray, reference: np.ndarray) -> tuple[float, float, float]:
-    """(peak |reference|, peak |deflection|, largest |deflection - reference|) over a revolution, in."""
-    return (float(np.hypot(*reference.T).max()), float(np.hypot(*deflection.T).max()),
-            float(np.hypot(*(deflection - reference).T).max()))
-
-
-def crossing(rpm, ratio, level: float = ERROR_LEVEL) -> float:
-    """The speed where ``ratio`` first passes ``level``, interpolated linearly; NaN if never."""
-    rpm, ratio = np.asarray(rpm, dtype=float), np.asarray(ratio, dtype=float)
-    above = np.flatnonzero(ratio > level)
-    if not len(above):
-        return math.nan
-    k = above[0]
-    if k == 0:
-        return float(rpm[0])
-    return float(rpm[k - 1] + (level - ratio[k - 1]) * (rpm[k] - rpm[k - 1]) / (ratio[k] - ratio[k - 1]))
-
-
 def frequencies() -> tuple[pd.DataFrame, pd.DataFrame]:
     """The frozen structure's two natural frequencies, per side: Exudyn at FREQUENCY_ANGLES
     (ELEMENTS and 2 ELEMENTS per link), the port's structure at every degree."""
@@ -491,24 +373,6 @@ def sweep() -> pd.DataFrame:
             row.update({"linear_peak": lin_peak, "linear_error_over_peak": lin_error / row["quasi_static_peak"]})
             rows.append(row)
     return pd.DataFrame(rows).drop(columns=["study", "link_mass", "compared_with", "change", "newton_diverged_at_s"])
-
-
-def linear_sweep() -> pd.DataFrame:
-    """The linear dynamics of the thesis's structure at every LINEAR_RPM, per side, for ZETA and
-    ZETA_LOW: the peak quasi-static deflection, the dynamic peak, the quasi-static answer's error
-    over its peak, and how much of a start-up transient is left after a revolution."""
-    deg = np.arange(LINEAR_STEPS) * 360.0 / LINEAR_STEPS
-    frames = []
-    for side in SIDES:
-        for zeta in (ZETA, ZETA_LOW):
-            out, decay = linear_periodic(LINEAR_RPM, zeta, side=side)
-            rows = []
-            for k, rpm in enumerate(LINEAR_RPM):
-                peak_qs, peak, error = error_of(out[k], quasi_static(deg, rpm, side))
-                rows.append({"side": side, "zeta": zeta, "rpm": rpm, "quasi_static_peak": peak_qs, "dynamic_peak": peak,
-                             "error_over_peak": error / peak_qs, "transient_left_per_rev": decay[k]})
-            frames.append(pd.DataFrame(rows))
-    return pd.concat(frames, ignore_index=True)
 
 
 # --- the scene ------------------------------------------------------------------------------------

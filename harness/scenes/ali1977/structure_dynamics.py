@@ -1,0 +1,160 @@
+"""Ali (1977): the thesis's own structure run dynamically, no Exudyn (for ``elastodynamics``
+and the docs' generated block).
+
+The path point's 2x2 stiffness from the corrected port's flexibility (beta^T F beta, eq. 6;
+the links massless, so the point carries all the inertia), m u'' + c u' + K(theta) u = -m
+a(theta) at constant crank speed, its periodic solution found directly (the one-revolution map's
+fixed point): the 1977 structure with the inertia of its deflection kept, small-deflection
+theory; and the quasi-static answer it is held against (``source_case1``/``cognate_case1``,
+corrected).  Damping: stiffness-proportional, a modal damping ratio zeta at DAMPING_HZ.
+
+Units: inch, pound-force, second; masses lbf s^2/in; crank angles in degrees; frequencies in Hz.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pandas as pd
+
+from ....port.ali1977.case1 import cognate_case1, source_case1, source_mechanics
+from ....port.ali1977.cognate import cognate_mechanics
+from ....port.ali1977.data import EXAMPLE
+from ....port.ali1977.quirks import CORRECTED
+from ....port.ali1977.structure import GRAVITY_IN, flexibility
+
+#: the source four-bar and its crossed cognate (the same path point, other links)
+SIDES, CASE = ("source", "cognate"), 1
+#: the design speed, rev/min
+RPM = 300.0
+#: the path point's mass, lbf s^2/in
+MASS = EXAMPLE.mass_lbf / GRAVITY_IN
+#: modal damping ratio at DAMPING_HZ (stiffness-proportional), and the lower one of the study
+ZETA, ZETA_LOW = 0.05, 0.02
+DAMPING_HZ = 10.0
+#: the thesis's structure's speed sweep, rev/min, and its time steps per revolution
+LINEAR_RPM = np.arange(20.0, 401.0, 1.0)
+LINEAR_STEPS = 720
+#: the quasi-static answer's error, as a fraction of its peak deflection, that sets the speed limit
+ERROR_LEVEL = 0.10
+
+
+def damping_beta(zeta: float) -> float:
+    """The stiffness-proportional damping coefficient (s): zeta at DAMPING_HZ."""
+    return 2.0 * zeta / (2.0 * math.pi * DAMPING_HZ)
+
+
+def _mechanics(deg, side: str, rpm: float = RPM):
+    """The corrected port's Mechanics of ``side`` over ``deg`` (its own frame) and the rotation
+    (2x2) that turns its own frame into the source's (D025's turn; the identity for the source)."""
+    deg = np.asarray(deg, dtype=float)
+    if side == "source":
+        return source_mechanics(deg, rpm=rpm, quirks=CORRECTED), np.eye(2)
+    if side != "cognate":
+        raise ValueError(f"side must be one of {SIDES}, got {side!r}")
+    mech = cognate_mechanics(deg, rpm=rpm, quirks=CORRECTED)
+    c, s = math.cos(mech.frame_angle), math.sin(mech.frame_angle)
+    return mech, np.array([[c, -s], [s, c]])
+
+
+def port_stiffness(deg, side: str = "source") -> np.ndarray:
+    """The path point's 2x2 stiffness (lbf/in, source frame) over ``deg``: the inverse of the x, y
+    block of the port's compliance beta^T F beta (eq. 6, corrected; no load on the rotation, as
+    Case I)."""
+    mech, turn = _mechanics(deg, side)
+    flex = flexibility(*mech.flex_lengths, EXAMPLE.section, CORRECTED)
+    compliance = np.swapaxes(mech.beta, -1, -2) @ flex @ mech.beta
+    return turn @ np.linalg.inv(compliance[:, :2, :2]) @ turn.T
+
+
+def frequencies_of(stiffness: np.ndarray) -> np.ndarray:
+    """The two natural frequencies (Hz) of the path-point mass on the stiffness (.., 2, 2)."""
+    return np.sqrt(np.linalg.eigvalsh(stiffness / MASS)) / (2.0 * math.pi)
+
+
+def _case1(deg, rpm: float, side: str) -> dict:
+    call = source_case1 if side == "source" else cognate_case1
+    return call(np.asarray(deg, dtype=float), rpm=rpm, quirks=CORRECTED)
+
+
+def quasi_static(deg, rpm: float, side: str = "source") -> np.ndarray:
+    """The corrected port's Case I deflection (dx, dy) (N, 2), in, source frame, at ``rpm``."""
+    out = _case1(deg, rpm, side)
+    return np.column_stack([out["dx"], out["dy"]])
+
+
+def rigid_path_point(deg, rpm: float = RPM, side: str = "source") -> np.ndarray:
+    """The rigid path point (x, y) (N, 2), in, source frame, from the corrected port."""
+    out = _case1(deg, rpm, side)
+    return np.column_stack([out["xp"], out["yp"]] if side == "source" else [out["cxp"], out["cyp"]])
+
+
+def linear_periodic(rpms, zeta: float, steps: int = LINEAR_STEPS, side: str = "source") -> tuple[np.ndarray, np.ndarray]:
+    """The thesis's structure run dynamically: m u'' + beta K u' + K u = -m a over a revolution at
+    each of ``rpms`` (S,), K = ``port_stiffness``, a the port's rigid acceleration, beta =
+    ``damping_beta(zeta)``; the trapezoidal rule (Newmark's average acceleration) in ``steps``
+    steps per revolution, and its periodic solution: the fixed point of the revolution's affine
+    map.  Returns (the deflections (S, steps, 2) at deg = 360 k / steps, the map's spectral
+    radius (S,): how fast a start-up transient dies per revolution)."""
+    rpms = np.atleast_1d(np.asarray(rpms, dtype=float))
+    deg = np.arange(steps) * 360.0 / steps
+    stiffness = port_stiffness(deg, side)
+    load = np.stack([-MASS * (lambda mech, turn: mech.acc @ turn.T)(*_mechanics(deg, side, r)) for r in rpms])  # (S, N, 2)
+    beta, eye = damping_beta(zeta), np.eye(2)
+    h = (60.0 / rpms / steps)[:, None, None]
+    maps, phi, g = [], np.broadcast_to(np.eye(4), (len(rpms), 4, 4)).copy(), np.zeros((len(rpms), 4))
+    for i in range(steps):
+        j = (i + 1) % steps
+        k0, k1 = stiffness[i] / MASS, stiffness[j] / MASS
+        # u1 - h/2 v1 = u0 + h/2 v0;  v1 + h/2 (beta K1 v1 + K1 u1)/m - h/2 P1/m = v0 + h/2 a0
+        lhs = np.block([[np.broadcast_to(eye, h.shape[:1] + (2, 2)), -h / 2 * eye],
+                        [h / 2 * k1, eye + h / 2 * beta * k1]])
+        rhs = np.block([[np.broadcast_to(eye, h.shape[:1] + (2, 2)), h / 2 * eye],
+                        [-h / 2 * k0, eye - h / 2 * beta * k0]])
+        force = np.concatenate([np.zeros((len(rpms), 2)), h[:, 0] / 2 * (load[:, i] + load[:, j]) / MASS], axis=1)
+        step_map, step_shift = np.linalg.solve(lhs, rhs), np.linalg.solve(lhs, force[..., None])[..., 0]
+        maps.append((step_map, step_shift))
+        phi = step_map @ phi
+        g = np.einsum("sij,sj->si", step_map, g) + step_shift
+    x = np.linalg.solve(np.eye(4) - phi, g[..., None])[..., 0]
+    out = np.empty((len(rpms), steps, 2))
+    for i, (step_map, step_shift) in enumerate(maps):
+        out[:, i] = x[:, :2]
+        x = np.einsum("sij,sj->si", step_map, x) + step_shift
+    return out, np.abs(np.linalg.eigvals(phi)).max(axis=1)
+
+
+def error_of(deflection: np.ndarray, reference: np.ndarray) -> tuple[float, float, float]:
+    """(peak |reference|, peak |deflection|, largest |deflection - reference|) over a revolution, in."""
+    return (float(np.hypot(*reference.T).max()), float(np.hypot(*deflection.T).max()),
+            float(np.hypot(*(deflection - reference).T).max()))
+
+
+def crossing(rpm, ratio, level: float = ERROR_LEVEL) -> float:
+    """The speed where ``ratio`` first passes ``level``, interpolated linearly; NaN if never."""
+    rpm, ratio = np.asarray(rpm, dtype=float), np.asarray(ratio, dtype=float)
+    above = np.flatnonzero(ratio > level)
+    if not len(above):
+        return math.nan
+    k = above[0]
+    if k == 0:
+        return float(rpm[0])
+    return float(rpm[k - 1] + (level - ratio[k - 1]) * (rpm[k] - rpm[k - 1]) / (ratio[k] - ratio[k - 1]))
+
+
+def linear_sweep() -> pd.DataFrame:
+    """The linear dynamics of the thesis's structure at every LINEAR_RPM, per side, for ZETA and
+    ZETA_LOW: the peak quasi-static deflection, the dynamic peak, the quasi-static answer's error
+    over its peak, and how much of a start-up transient is left after a revolution."""
+    deg = np.arange(LINEAR_STEPS) * 360.0 / LINEAR_STEPS
+    frames = []
+    for side in SIDES:
+        for zeta in (ZETA, ZETA_LOW):
+            out, decay = linear_periodic(LINEAR_RPM, zeta, side=side)
+            rows = []
+            for k, rpm in enumerate(LINEAR_RPM):
+                peak_qs, peak, error = error_of(out[k], quasi_static(deg, rpm, side))
+                rows.append({"side": side, "zeta": zeta, "rpm": rpm, "quasi_static_peak": peak_qs, "dynamic_peak": peak,
+                             "error_over_peak": error / peak_qs, "transient_left_per_rev": decay[k]})
+            frames.append(pd.DataFrame(rows))
+    return pd.concat(frames, ignore_index=True)
