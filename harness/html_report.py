@@ -36,6 +36,9 @@ if TYPE_CHECKING:
     from .report_folder import Folder, OutputSection, SceneSection
 
 TEMPLATES = Path(__file__).resolve().parent / "templates"
+#: the page's size budget (bytes) for a full run's folder (reproduce, bench, arithmetic): a page to
+#: open and read, not a data dump; ``report_folder.write`` warns ``PageSizeWarning`` beyond it
+PAGE_BUDGET = 3_000_000
 #: tagged src edits shown per register entry (the rest are counted)
 EDITS_SHOWN = 8
 #: what a cell is coloured as: ``diff.classify_cells``'s class, a matched cell shown as ``match``
@@ -182,6 +185,10 @@ def _output_view(folder: "Folder", section: "OutputSection") -> dict:
         view["html"] = markdown_html(body, PurePosixPath(section.folder.relative_to(folder.out_dir).as_posix()))
         view["figures"] = figures(section.folder)
     return view
+
+
+class PageSizeWarning(UserWarning):
+    """report.html is larger than ``PAGE_BUDGET``; it is still written."""
 
 
 def render(folder: "Folder") -> str:

@@ -13,6 +13,7 @@ Both end with "How this run was made", from the folder's manifest.json (``manife
 from __future__ import annotations
 
 import os
+import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -167,4 +168,9 @@ def write(out_dir: Path, latest: str = "") -> Path:
     page = html_report.render(folder)
     _replace(out_dir / "report.md", markdown(folder, latest))
     _replace(out_dir / "report.html", page)
+    size = len(page.encode())
+    if size > html_report.PAGE_BUDGET:
+        warnings.warn(f"{out_dir / 'report.html'} is {size / 1e6:.2f} MB, over the page's budget of "
+                      f"{html_report.PAGE_BUDGET / 1e6:g} MB (html_report.PAGE_BUDGET): it is written; "
+                      "make its figures or data smaller", html_report.PageSizeWarning, stacklevel=2)
     return out_dir / "report.html"

@@ -113,6 +113,20 @@ def test_a_report_that_cannot_be_built_leaves_the_last_one(two_runs, monkeypatch
     assert not list(two_runs.glob(".report*"))                  # no temporary file left
 
 
+def test_a_page_over_its_budget_is_written_with_a_warning(two_runs, monkeypatch):
+    """Within the budget nothing is said; over it, a PageSizeWarning naming the size, the page still
+    written whole."""
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", html_report.PageSizeWarning)
+        page = report_folder.write(two_runs)
+    size = page.stat().st_size
+    monkeypatch.setattr(html_report, "PAGE_BUDGET", size - 1)
+    with pytest.warns(html_report.PageSizeWarning, match=rf"{size / 1e6:.2f} MB, over the page's budget"):
+        report_folder.write(two_runs)
+    assert page.stat().st_size == size
+
+
 def _linkrepro(*args: str, cwd: Path) -> subprocess.CompletedProcess:
     return subprocess.run([sys.executable, "-m", "linkrepro", *args], capture_output=True, text=True, cwd=cwd,
                           timeout=CHILD_SECONDS)
