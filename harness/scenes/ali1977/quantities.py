@@ -1,11 +1,16 @@
 """Ali (1977): what each column of the scenes' CSVs means, and its unit (``harness/quantities.py``).
 
 Deflections and positions of the path point P in inches, angles in degrees, rotations in
-radians, as the K.E.D. tables and the Appendix A curves give them.
+radians, as the K.E.D. tables and the Appendix A curves give them; the Exudyn scenes' speeds in
+rev/min, frequencies in Hz, times in seconds.
 """
 from __future__ import annotations
 
 from ...quantities import DIFF, Quantity as Q
+from .elastodynamics import ELEMENTS, LIMIT_CHECK_RPM, REGULARIZING_MASS
+from .multibody import SHEAR_FACTOR
+from .quasi_static import EB_ELEMENTS, PAIR
+from .structure_dynamics import DAMPING_HZ, ERROR_LEVEL, RPM, ZETA, ZETA_LOW
 
 #: the K.E.D. tables' columns (Tables I-III): published.csv, each engine's CSV
 KED = {
@@ -71,10 +76,224 @@ CASE3 = {
     "legacy_seconds_n5": Q("legacy wall time (n = 5)", "s"),
 }
 
+#: ali1977-conditioning: conditioning.csv (a point and engine a row) and summary.csv (conditioning.py)
+CONDITIONING = {
+    "l1": Q("link length l1, the input link (crank)", "in"),
+    "l2": Q("link length l2, the extender (coupler point to path point)", "in"),
+    "l3": Q("link length l3, the coupler", "in"),
+    "l4": Q("link length l4, the follower", "in"),
+    "l5": Q("link length l5, the ground link", "in"),
+    "alp_deg": Q("angle alpha from the coupler to the extender (the listings' ALP)", "deg"),
+    "input_deg": KED["input_deg"],
+    "sin_mu": Q("sine of the transmission angle (coupler to follower), from the 60-digit evaluation", ""),
+    "spread": Q("the links' spread: longest link length / shortest", ""),
+    "condition": Q("the condition the engines compute: the links' spread / sin^2(transmission angle)", ""),
+    "engine": Q("engine (float64: the corrected port; real4: the same with the listings' REAL*4 storage)", ""),
+    "bound": Q("the engines' bound on the relative error at this condition and spread", ""),
+    "error": Q("relative error of the Case I source deflection (dx, dy, l2 rot) against the same equations in "
+               "60 digits (empty where the engine refused)", ""),
+    "verdict": Q("what the engine did (returned, PrecisionWarning, SingularPositionError or AssemblyError)", ""),
+    "points": Q("points (four-bar and input angle) evaluated", ""),
+    "refused": Q("points the engine refused (no deflection returned)", ""),
+    "warned": Q("points the engine answered with a PrecisionWarning", ""),
+    "worst_error_over_bound": Q("largest relative error / its bound over the answered points", ""),
+    "silent_failures": Q("points returned without a warning whose relative error passes half the storage's digits "
+                         "(sqrt of its unit roundoff)", ""),
+}
+
+SIDE = Q("four-bar (source, or its crossed cognate)", "")
+ELEMENTS_PER_LINK = Q("beam elements per link (Exudyn)", "")
+_EXUDYN = f"Exudyn: shear stiffness 12 EI / h^2 per element, {EB_ELEMENTS} elements per link"
+_STIFF = f"Exudyn with stiff shear ({SHEAR_FACTOR:g} EA), extrapolated from {PAIR[0]} and {PAIR[1]} elements per link"
+#: the path point's deflection, the corrected port's (both Exudyn scenes)
+PORT_DEFLECTION = {
+    "port_dx": Q("path-point deflection along x (source frame), the corrected port", "in"),
+    "port_dy": Q("path-point deflection along y (source frame), the corrected port", "in"),
+}
+#: ali1977-multibody (quasi_static.py): deflections.csv, convergence.csv, shear.csv, linearity.csv
+MULTIBODY = PORT_DEFLECTION | {
+    "case": Q("loading case (1, 2, 3: Case I mass at the path point, II at each joint, III distributed)", ""),
+    "side": SIDE,
+    "input_deg": KED["input_deg"],
+    "port_rot": Q("path-point rotation about z, the corrected port", "rad"),
+    "exudyn_dx": Q(f"path-point deflection along x (source frame), {_EXUDYN}", "in"),
+    "exudyn_dy": Q(f"path-point deflection along y (source frame), {_EXUDYN}", "in"),
+    "exudyn_rot": Q(f"path-point rotation about z, {_EXUDYN}", "rad"),
+    "stiff_dx": Q(f"path-point deflection along x (source frame), {_STIFF}", "in"),
+    "stiff_dy": Q(f"path-point deflection along y (source frame), {_STIFF}", "in"),
+    "stiff_rot": Q(f"path-point rotation about z, {_STIFF}", "rad"),
+    "reference": Q("what Exudyn is held against (port: the corrected port)", ""),
+    "shear": Q("the beams' shear stiffness model (factor x EA, or kappa x 12 EI / h^2 per element)", ""),
+    "value": Q("the shear stiffness's factor (of EA) or kappa (of 12 EI / h^2)", ""),
+    "elements": ELEMENTS_PER_LINK,
+    "scheme": Q("raw (one mesh), or extrapolated (h^2 error removed from n/2 and n elements)", ""),
+    "peak_in": Q("peak path-point deflection |(dx, dy)| of the corrected port over the angles", "in"),
+    "max_error_in": Q("largest |(dx, dy)| difference from the corrected port over the angles", "in"),
+    "relative_to_peak": Q("largest |(dx, dy)| difference / the port's peak deflection", ""),
+    "max_rot_error_rad": Q("largest path-point rotation difference from the corrected port over the angles", "rad"),
+    # linearity.csv: Case I source at its largest deflection, the loads scaled and the answer scaled back
+    "solve": Q("Exudyn's static solve (linear, or geometrically nonlinear)", ""),
+    "load_scale": Q("load factor (the answer divided by it)", ""),
+    "dx": Q("path-point deflection along x / the load factor", "in"),
+    "dy": Q("path-point deflection along y / the load factor", "in"),
+    "rot": Q("path-point rotation about z / the load factor", "rad"),
+    "relative_difference": Q("|(dx, dy) - the linear answer at load factor 1| / |that answer|", ""),
+}
+
+#: ali1977-elastodynamics (elastodynamics.py, structure_dynamics.py): Case I, the Exudyn runs at
+#: ``elastodynamics.ELEMENTS`` elements per link; "the thesis's structure run dynamically" is
+#: ``structure_dynamics.linear_periodic`` (the port's stiffness, the deflection's inertia kept)
+_RPM, _LOW = f"{RPM:g} rpm", f"zeta {ZETA_LOW:g}"
+_FINE, _MASS = f"{2 * ELEMENTS} elements per link", f"the links given {REGULARIZING_MASS:.0%} of their mass"
+ELASTODYNAMICS = PORT_DEFLECTION | {
+    "side": SIDE,
+    "crank_deg": Q("crank angle (input-link rotation)", "deg"),
+    # frequencies.csv, frequencies_port.csv: the frozen linkage, the path-point mass on massless links
+    "f1_exudyn": Q(f"first natural frequency of the frozen linkage, Exudyn ({ELEMENTS} elements per link, its "
+                   "stiffness condensed onto the path point)", "Hz"),
+    "f2_exudyn": Q(f"second natural frequency of the frozen linkage, Exudyn ({ELEMENTS} elements per link, its "
+                   "stiffness condensed onto the path point)", "Hz"),
+    "f1_exudyn_fine": Q(f"first natural frequency of the frozen linkage, Exudyn on {_FINE}", "Hz"),
+    "f2_exudyn_fine": Q(f"second natural frequency of the frozen linkage, Exudyn on {_FINE}", "Hz"),
+    "f1_port": Q("first natural frequency of the frozen linkage, the corrected port's flexibility (beta^T F beta)",
+                 "Hz"),
+    "f2_port": Q("second natural frequency of the frozen linkage, the corrected port's flexibility (beta^T F beta)",
+                 "Hz"),
+    "condensation_check_in": Q("largest |Exudyn's condensed compliance x the Case I load - its linear deflection| "
+                               "(a check of the condensation)", "in"),
+    # statics.csv: the 300 rpm Case I load on the frozen linkage
+    "exudyn_linear_dx": Q(f"path-point deflection along x (source frame) under the {_RPM} load, Exudyn linear", "in"),
+    "exudyn_linear_dy": Q(f"path-point deflection along y (source frame) under the {_RPM} load, Exudyn linear", "in"),
+    "nonlinear_dx": Q(f"path-point deflection along x (source frame) under the {_RPM} load, Exudyn geometrically "
+                      "nonlinear", "in"),
+    "nonlinear_dy": Q(f"path-point deflection along y (source frame) under the {_RPM} load, Exudyn geometrically "
+                      "nonlinear", "in"),
+    "nonlinear_fine_mesh_change": Q(f"distance the nonlinear static deflection moves on {_FINE} (empty at the angles "
+                                    "not checked; summary.csv: the source four-bar's largest over the angles)", "in"),
+    "nonlinear_load_steps_change": Q("distance the nonlinear static deflection moves with twice the load steps (empty "
+                                     "at the angles not checked; summary.csv: the source four-bar's largest over the "
+                                     "angles)", "in"),
+    # steady_300.csv: over the last revolution at 300 rpm
+    "quasi_static_dx": Q(f"quasi-static path-point deflection along x (source frame) at {_RPM}, the corrected port",
+                         "in"),
+    "quasi_static_dy": Q(f"quasi-static path-point deflection along y (source frame) at {_RPM}, the corrected port",
+                         "in"),
+    "dynamic_dx": Q(f"path-point deflection along x (source frame) in the elastodynamic steady state at {_RPM}, "
+                    f"Exudyn, zeta {ZETA:g}", "in"),
+    "dynamic_dy": Q(f"path-point deflection along y (source frame) in the elastodynamic steady state at {_RPM}, "
+                    f"Exudyn, zeta {ZETA:g}", "in"),
+    "linear_dynamic_dx": Q(f"path-point deflection along x (source frame) at {_RPM}, the thesis's structure run "
+                           f"dynamically, zeta {ZETA:g}", "in"),
+    "linear_dynamic_dy": Q(f"path-point deflection along y (source frame) at {_RPM}, the thesis's structure run "
+                           f"dynamically, zeta {ZETA:g}", "in"),
+    # convergence.csv (the 300 rpm steady state and its checks), sweep.csv, linear_sweep.csv
+    "study": Q("the run: standard, or the check it is (step, mesh, start, link mass, damping, speed)", ""),
+    "rpm": Q("crank speed", "rpm"),
+    "elements": ELEMENTS_PER_LINK,
+    "steps_per_rev": Q("time steps per revolution", ""),
+    "zeta": Q(f"modal damping ratio at {DAMPING_HZ:g} Hz (stiffness-proportional damping)", ""),
+    "start_deg": Q("crank angle the run starts from (undeformed)", "deg"),
+    "revolutions": Q("revolutions run", ""),
+    "period": Q("the steady state's period in revolutions (1 or 2; 0: none reached)", ""),
+    "periodicity_in": Q("largest difference of the path point between the last two revolutions", "in"),
+    "period2_in": Q("largest difference of the path point between the last revolution and the one two before", "in"),
+    "quasi_static_peak": Q("peak quasi-static path-point deflection |(dx, dy)| over a revolution at the row's speed, "
+                           f"the corrected port (summary.csv: the source four-bar at {_RPM})", "in"),
+    "dynamic_peak": Q("peak path-point deflection |(dx, dy)| over a revolution of the steady state, Exudyn "
+                      "(linear_sweep.csv: the thesis's structure run dynamically; summary.csv: the source four-bar "
+                      f"at {_RPM}, zeta {ZETA:g})", "in"),
+    "max_error": Q("largest |steady state - quasi-static deflection| over a revolution, Exudyn", "in"),
+    "error_over_peak": Q("largest |steady state - quasi-static deflection| / the quasi-static peak, Exudyn "
+                         "(linear_sweep.csv: the thesis's structure run dynamically)", ""),
+    "link_mass": Q("the beams' mass, a fraction of the links' own (0: massless links, as Case I)", ""),
+    "compared_with": Q("the run that change is measured from", ""),
+    "change": Q("largest distance between this run's steady state and that run's", "in"),
+    "newton_diverged_at_s": Q("time from the start where Exudyn's Newton iteration diverged (empty: it did not)", "s"),
+    "linear_peak": Q("peak path-point deflection over a revolution, the thesis's structure run dynamically", "in"),
+    "linear_error_over_peak": Q("largest |deflection - quasi-static| / the quasi-static peak, the thesis's structure "
+                                "run dynamically", ""),
+    "transient_left_per_rev": Q("fraction of a start-up transient left after a revolution (the revolution map's "
+                                "spectral radius)", ""),
+}
+#: summary.csv: each four-bar's numbers, the source's under these names and the cognate's as
+#: cognate_<name>; a name a file's column has too keeps that column's words (ELASTODYNAMICS)
+_PER_SIDE = {
+    "f1_min_hz": Q("lowest first natural frequency of the frozen linkage over the cycle (the corrected port, every "
+                   "degree)", "Hz"),
+    "f1_max_hz": Q("highest first natural frequency of the frozen linkage over the cycle (the corrected port, every "
+                   "degree)", "Hz"),
+    "f2_min_hz": Q("lowest second natural frequency of the frozen linkage over the cycle (the corrected port, every "
+                   "degree)", "Hz"),
+    "f2_max_hz": Q("highest second natural frequency of the frozen linkage over the cycle (the corrected port, every "
+                   "degree)", "Hz"),
+    "f1_exudyn_over_port_max": Q("largest |Exudyn's first natural frequency / the port's - 1|", ""),
+    "f1_exudyn_fine_over_port_max": Q(f"largest |Exudyn's first natural frequency on {_FINE} / the port's - 1|", ""),
+    "quasi_static_peak": Q(f"peak quasi-static path-point deflection over a revolution at {_RPM}, the corrected port",
+                           "in"),
+    "nonlinear_peak": Q(f"peak geometrically nonlinear static deflection under the {_RPM} load, Exudyn", "in"),
+    "nonlinear_gap_max": Q(f"largest |nonlinear static deflection - the port's| under the {_RPM} load", "in"),
+    "nonlinear_gap_over_peak": Q(f"largest |nonlinear static deflection - the port's| under the {_RPM} load / the "
+                                 "port's peak", ""),
+    "nonlinear_fine_mesh_change": Q(f"largest distance the nonlinear static deflection moves on {_FINE}", "in"),
+    "nonlinear_load_steps_change": Q("largest distance the nonlinear static deflection moves with twice the load "
+                                     "steps", "in"),
+    "exudyn_linear_gap_over_peak": Q(f"largest |Exudyn's linear static deflection - the port's| under the {_RPM} load "
+                                     "/ the port's peak", ""),
+    "dynamic_peak": Q(f"peak deflection of the elastodynamic steady state at {_RPM}, Exudyn", "in"),
+    "dynamic_error": Q(f"largest |steady state - quasi-static deflection| over a revolution at {_RPM}, Exudyn", "in"),
+    "dynamic_error_over_peak": Q(f"largest |steady state - quasi-static deflection| at {_RPM} / the quasi-static "
+                                 "peak, Exudyn", ""),
+    "dynamic_revolutions": Q(f"revolutions Exudyn ran to the steady state at {_RPM}", ""),
+    "dynamic_periodicity_in": Q(f"largest difference of the path point between the last two revolutions at {_RPM}",
+                                "in"),
+    "half_step_change": Q(f"distance the {_RPM} steady state moves with half the time step", "in"),
+    "fine_mesh_change": Q(f"distance the {_RPM} steady state moves on {_FINE}", "in"),
+    "linear_dynamic_peak_300": Q(f"peak deflection of the thesis's structure run dynamically at {_RPM}, "
+                                 f"zeta {ZETA:g}", "in"),
+    "linear_dynamic_peak_300_low": Q(f"peak deflection of the thesis's structure run dynamically at {_RPM}, {_LOW}",
+                                     "in"),
+    "speed_limit_rpm": Q(f"speed where the quasi-static answer's error first passes {ERROR_LEVEL:.0%} of its peak, "
+                         f"Exudyn's sweep (zeta {ZETA:g})", "rpm"),
+    "speed_limit_linear_rpm": Q(f"speed where the quasi-static answer's error first passes {ERROR_LEVEL:.0%} of its "
+                                f"peak, the thesis's structure run dynamically (zeta {ZETA:g})", "rpm"),
+    "speed_limit_linear_low_zeta_rpm": Q(f"speed where the quasi-static answer's error first passes "
+                                         f"{ERROR_LEVEL:.0%} of its peak, the thesis's structure run dynamically "
+                                         f"({_LOW})", "rpm"),
+}
+#: summary.csv's numbers of the source four-bar alone
+_SOURCE_ONLY = {
+    "crank_hz": Q(f"the crank's frequency at {_RPM}", "Hz"),
+    **{f"harmonic_{n}": Q(f"harmonic {n} of the source path point's rigid acceleration, its size / the first's", "")
+       for n in range(2, 6)},
+    "coarse_mesh_change": Q(f"distance the source's {_RPM} steady state moves on half the elements per link", "in"),
+    "start_180_change": Q(f"distance the source's {_RPM} steady state moves when started at 180 deg", "in"),
+    "regularizing_mass_change": Q(f"distance the source's {_RPM} steady state moves with {_MASS}", "in"),
+    "massless_low_zeta_diverged_at_s": Q(f"time from the start where Exudyn's Newton iteration diverged, the source at "
+                                         f"{_RPM}, {_LOW}, massless links", "s"),
+    "low_zeta_peak": Q(f"peak deflection of the source's steady state at {_RPM}, {_LOW}, {_MASS}, Exudyn", "in"),
+    "low_zeta_error": Q(f"largest |steady state - quasi-static deflection| of the source at {_RPM}, {_LOW}, {_MASS}",
+                        "in"),
+    "low_zeta_half_step_change": Q(f"distance the source's {_RPM} steady state at {_LOW}, {_MASS} moves with half the "
+                                   "time step", "in"),
+    "limit_check_error_over_peak": Q(f"the quasi-static answer's error / its peak at {LIMIT_CHECK_RPM:g} rpm, the "
+                                     "source in Exudyn", ""),
+    "limit_check_half_step": Q(f"the quasi-static answer's error / its peak at {LIMIT_CHECK_RPM:g} rpm, the source in "
+                               "Exudyn with half the time step", ""),
+    "limit_check_fine_mesh": Q(f"the quasi-static answer's error / its peak at {LIMIT_CHECK_RPM:g} rpm, the source in "
+                               f"Exudyn on {_FINE}", ""),
+}
+ELASTODYNAMICS_SUMMARY = (
+    _SOURCE_ONLY
+    | {name: Q(f"source four-bar: {q.words}", q.unit) for name, q in _PER_SIDE.items() if name not in ELASTODYNAMICS}
+    | {f"cognate_{name}": Q(f"cognate four-bar: {q.words}", q.unit) for name, q in _PER_SIDE.items()})
+
 QUANTITIES = {
     "ali1977-table1": KED | SUMS,
     "ali1977-table2": KED | SUMS | COGNATE_SEARCH,
     "ali1977-table3": KED | SUMS | COGNATE_SEARCH,
     "ali1977-appendixA": APPENDIX,
     "ali1977-case3-convergence": CASE3,
+    "ali1977-conditioning": CONDITIONING,
+    "ali1977-multibody": MULTIBODY,
+    "ali1977-elastodynamics": ELASTODYNAMICS | ELASTODYNAMICS_SUMMARY,
 }

@@ -61,5 +61,29 @@ FIGURES = {
     "register_ids": DIFF["register_ids"],
 }
 
+#: rahman1996-multibody (multibody.py): curves.csv (long: ``port``, ``exudyn`` in the unit of
+#: the row's ``table``), agreement.csv (``peak``, ``max_difference`` likewise), step_convergence.csv
+_COMPARED = ("5_3", "5_4", "5_7")
+MULTIBODY = {
+    **{table: TABLE_QUANTITY[table] for table in _COMPARED},
+    "masses": Q("point masses (before: the equal ones; after: the optimum balancing's)", ""),
+    "crank_pin": Q("Exudyn's crank-pin joint (universal: the rod cannot spin about its axis; spherical: it can)", ""),
+    "table": Q("Rahman (1996) table (5_3 shaking force, 5_4 shaking moment, 5_7 input torque)", ""),
+    "crank_deg": CRANK,
+    "port": Q("the corrected port's value (the table's column for the masses)", "", per_row="table"),
+    "exudyn": Q("Exudyn's value", "", per_row="table"),
+    "peak": Q("peak |the corrected port's value| over the 37 crank angles", "", per_row="table"),
+    "max_difference": Q("largest |Exudyn - the corrected port| over the 37 crank angles", "", per_row="table"),
+    "relative": Q("largest |Exudyn - the corrected port| / the peak", ""),
+    "ground_residual": Q("largest |sum of m a + the ground joints' reactions| over the revolution (Newton's law by "
+                         "Exudyn's constraint forces)", "lbf"),
+    "exudyn_seconds": Q("Exudyn's wall time for the run (masses and crank pin)", "s"),
+    "step_deg": Q("Exudyn's time step, as crank rotation", "deg"),
+    **{f"relative_{table}": Q(f"largest |Exudyn - the corrected port| / the peak, {TABLE_QUANTITY[table].words} "
+                              f"(Table {table.replace('_', '.')}), before masses, universal crank pin", "")
+       for table in _COMPARED},
+}
+
 QUANTITIES = {f"rahman1996-table{table}": _table(table) for table in TABLE_QUANTITY}
 QUANTITIES["rahman1996-figures"] = FIGURES
+QUANTITIES["rahman1996-multibody"] = MULTIBODY
