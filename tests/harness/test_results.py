@@ -150,3 +150,21 @@ def test_importing_the_harness_stays_light():
             "assert 'linkrepro.harness.scenes' not in sys.modules and 'pandas' not in sys.modules; "
             "assert callable(h.load) and 'linkrepro.harness.scenes' not in sys.modules")
     subprocess.run([sys.executable, "-c", code], check=True, env=os.environ.copy())
+
+
+def test_every_scene_s_run_of_record_reads_with_units(tmp_path):
+    """``load`` reads every CSV of every scene's run of record (reference/: a full run, the long
+    scenes included) with a unit for every column: no scene writes a column it does not describe."""
+    import lzma
+
+    from linkrepro.harness.verify import REFERENCE_DIR, SUFFIX
+    stored = sorted(REFERENCE_DIR.glob(f"*/*{SUFFIX}"))
+    assert {p.parent.name for p in stored} == set(SCENES)
+    for path in stored:
+        target = tmp_path / path.parent.name / path.name.removesuffix(".xz")      # <scene>/<file>.csv
+        target.parent.mkdir(exist_ok=True)
+        target.write_bytes(lzma.decompress(path.read_bytes()))
+    for name in SCENES:
+        for stem, frame in load(name, tmp_path).items():
+            per_row = {c for c in frame.columns if c != "unit" and describe(name, c).per_row}
+            assert set(frame.attrs["units"]) == set(frame.columns) - per_row - {"unit"}, (name, stem)
