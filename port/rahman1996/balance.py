@@ -28,7 +28,7 @@ from .listing import Carry, listing_pass, unit_loads
 from .objective import UnitLoads, objective, position_forms, table_quantities
 from .quirks import CSSP_CORRECTED, CSSP_PRINTED, CsspQuirks
 
-__all__ = ["CsspInputs", "balance", "solve_qp", "hessian_shift", "link_masses", "CRANK_DEG", "CSSP_PRINTED",
+__all__ = ["CsspInputs", "balance", "solve_qp", "hessian_shift", "link_masses", "principal_moments", "CRANK_DEG", "CSSP_PRINTED",
            "CSSP_CORRECTED"]
 
 #: the listing's positions: TH1 = J*10 - 10, J = 1..37
@@ -155,12 +155,17 @@ def link_masses(x) -> np.ndarray:
     return np.array([x[0:4].sum(), x[4:8].sum(), x[8]])
 
 
+def principal_moments(arms, masses) -> tuple[float, float, float]:
+    """I_xx, I_yy, I_zz about a link's centre of mass (lb*s^2*in, eq. 2.9) of its point masses:
+    ``masses`` m1, m2, m3 (lb*s^2/in) in pairs at +-X, +-Y, +-Z (``arms``, in); a fourth mass at
+    the centre adds nothing."""
+    (xa, ya, za), (m1, m2, m3) = arms, masses[:3]
+    return ya ** 2 * m2 + za ** 2 * m3, xa ** 2 * m1 + za ** 2 * m3, xa ** 2 * m1 + ya ** 2 * m2
+
+
 def _inertia_table(c: Constants, x: np.ndarray) -> np.ndarray:
     """Table 5.1: principal moments of crank and rod (eq. 2.9), before and after."""
     rows = []
     for link, (arms, inertia) in enumerate(((c.crank_arms, c.inertia_crank), (c.rod_arms, c.inertia_rod))):
-        xa, ya, za = arms
-        m1, m2, m3 = x[4 * link:4 * link + 3]
-        after = (ya ** 2 * m2 + za ** 2 * m3, xa ** 2 * m1 + za ** 2 * m3, xa ** 2 * m1 + ya ** 2 * m2)
-        rows += list(zip(inertia, after))
+        rows += list(zip(inertia, principal_moments(arms, x[4 * link:4 * link + 3])))
     return np.array(rows)

@@ -110,25 +110,13 @@ def steps_per_rev(rpm: float) -> int:
 
 # --- Exudyn, on the builder's model -------------------------------------------------------------
 
-def _jacobian(model) -> np.ndarray:
-    """Exudyn's static Jacobian (ODE2 and constraint rows) of a frozen model at its reference."""
-    exu = multibody.require()
-    solver, settings = exu.MainSolverStatic(), model.settings
-    solver.InitializeSolver(model.mbs, settings)
-    solver.ComputeNewtonResidual(model.mbs, settings)
-    solver.ComputeNewtonJacobian(model.mbs, settings)
-    jacobian = np.array(solver.GetSystemJacobian())
-    solver.FinalizeSolver(model.mbs, settings)
-    return jacobian
-
-
 def exudyn_stiffness(deg: float, elements: int = ELEMENTS, side: str = "source") -> tuple[np.ndarray, float]:
     """The frozen structure's stiffness at the path point (2x2, lbf/in) in Exudyn: its Jacobian
     condensed onto the path point's x, y (the links are massless, so this is exact for the
     frequencies); and, as a check of the condensation, the largest difference (in) between the
     compliance times the Case I load and the builder's own linear deflection under it."""
     model = mb.build(side, float(deg), CASE, elements, masses="none", shear_per_element=SHEAR_PER_ELEMENT)
-    jacobian = _jacobian(model)
+    jacobian = model.jacobian()
     index = model.mbs.GetNodeODE2Index(model.path_node)
     unit = np.zeros((len(jacobian), 2))
     unit[index, 0] = unit[index + 1, 1] = 1.0

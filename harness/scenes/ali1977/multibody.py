@@ -288,6 +288,10 @@ class Model:
         solver.FinalizeSolver(self.mbs, settings)
         return jacobian, loaded - unloaded
 
+    def jacobian(self) -> np.ndarray:
+        """Exudyn's static Jacobian (ODE2 and constraint rows) at the unloaded reference (frozen mode)."""
+        return self._static_system()[0]
+
     def linear_solution(self) -> np.ndarray:
         """The linear static displacement of every ODE2 coordinate (in, rad): the Newton step of
         Exudyn's static solver from the unloaded reference, u = -J^-1 r (J its Jacobian with the

@@ -30,7 +30,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from ....port.rahman1996.balance import CRANK_DEG, balance
+from ....port.rahman1996.balance import CRANK_DEG, balance, link_masses, principal_moments
 from ....port.rahman1996.data import Constants, CsspInputs
 from ....port.rahman1996.quirks import CSSP_CORRECTED
 from ....port.slider_crank.kinematics import kinematics
@@ -65,13 +65,6 @@ class Solver:
     spectral_radius: float = 0.8
 
 
-def _link(point_masses, arms) -> tuple[float, np.ndarray]:
-    """Mass and principal moments about the centre of mass (lbf s^2/in, lbf s^2 in) of a link
-    of four point masses (eq. 2.9): m1..m3 in pairs at +-X, +-Y, +-Z, m4 at the centre."""
-    (x, y, z), (m1, m2, m3, m4) = arms, point_masses
-    return m1 + m2 + m3 + m4, np.array([y * y * m2 + z * z * m3, x * x * m1 + z * z * m3, x * x * m1 + y * y * m2])
-
-
 def simulate(point_masses, crank_pin: str, step_deg: float = STEP_DEG, inputs: CsspInputs = CsspInputs(),
              solver: Solver = Solver()) -> pd.DataFrame:
     """Exudyn's shaking force (lbf), moment about the origin (lbf in) and input torque (lbf in)
@@ -86,7 +79,8 @@ def simulate(point_masses, crank_pin: str, step_deg: float = STEP_DEG, inputs: C
                                   RigidBodyInertia, SensorBody, SensorObject)
     c = Constants.of(inputs, real4=False)
     x = np.asarray(point_masses, dtype=float)
-    (m1, i1), (m2, i2), m3 = _link(x[0:4], c.crank_arms), _link(x[4:8], c.rod_arms), x[8]
+    m1, m2, m3 = link_masses(x)
+    i1, i2 = (np.array(principal_moments(arms, x[k:k + 3])) for k, arms in ((0, c.crank_arms), (4, c.rod_arms)))
     omega, k4, zhat = c.omega, np.asarray(c.k4), np.array([0.0, 0.0, 1.0])
     start = kinematics(c, np.array([0.0]))
     p, q, r2 = start.P[0], start.Q[0], start.R2[0]
