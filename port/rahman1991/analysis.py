@@ -155,8 +155,9 @@ def _raise_first(status: np.ndarray, deg: np.ndarray, closure: np.ndarray, sign:
               DEAD_CENTRE: (SingularPositionError, "GSC: dead centre, the crank torque cannot be balanced")}
     for i, s in enumerate(status):
         if s not in CONVERGED or s == DEAD_CENTRE:
-            kind, message = errors[s.split(": ")[-1]]
-            raise kind(f"{message} (status {s!r})", float(deg[i]), closure=float(closure[i]), branch=float(sign[i]))
+            kind, message = errors[str(s).split(": ")[-1]]
+            found = {"closure": float(closure[i]), "branch": float(sign[i])}
+            raise kind(message, float(deg[i]), **{k: v for k, v in found.items() if np.isfinite(v)})
 
 
 def sweep(quirks: GscQuirks = GSC_PRINTED, a4=GRID_A4, alpha4_deg=GRID_ALPHA4, s1=GRID_S1,
