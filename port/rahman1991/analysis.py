@@ -3,8 +3,8 @@ generalized slider crank, one configuration (``analyse``) or the example's grid 
 
 A result is a pandas DataFrame, one row per crank angle, columns ``COLUMNS``: the
 configuration (a4 in, alpha4 deg, s1 in), crank_deg, converged, S4 (in), theta2, eta2,
-theta3, eta3 (deg; theta in [0, 360), eta in [-180, 180): an elevation, whose closed-loop
-values lie in (-90, 90)), and the 18 joint-force components of ``gsc_forces.COMPONENTS``
+theta3, eta3 (deg; theta in [0, 360), eta in [-180, 180): an elevation; a converged row's
+eta2 lies in (-90, 90)), and the 18 joint-force components of ``gsc_forces.COMPONENTS``
 (lbf, lbf*in, each in its thesis frame).  Diagnostics follow: status, closure (||M1 L2 L3 M4
 - I|| at the answer), iterations (Newton steps; 0 for the closed-form corrected model) and
 branch (the answer's assembly, sign(S4 + b): +1 the example's, -1 the other, 0 where both

@@ -26,10 +26,12 @@ What a Newton that stops has found is checked (register D170):
   of |Q - P| = a2); ``branch`` is the sign of S4 + b (+1: the root the thesis's example runs on
   and ``slider_crank.kinematics`` keeps, -1 the other assembly; 0 where the two meet to the
   closure tolerance).  The caller asks for one (default +1); a stopped Newton that is not a
-  closed loop on it, in the closed form's angles (cos eta2 > 0), is tried again from the
-  closed form on that branch where the five-variable loop closes there; what still misses it
-  says "loop open" or "other branch".  ``branch=None`` runs the printed method unchecked (the
-  thesis's program, the 1996 build's Newton).
+  closed loop on it is tried again from the closed form on that branch where the
+  five-variable loop closes there; what still misses it says "loop open" or "other branch".
+  A closed loop on it is given in the closed form's angles (cos eta2 > 0; the other
+  parameterization of the same matrices, theta2 + pi, pi - eta2, pi - theta3, pi + eta3, is
+  mapped to them).  ``branch=None`` runs the printed method unchecked (the thesis's program,
+  the 1996 build's Newton).
 
 So a single crank angle, or a sweep started anywhere, gives the sweep from 0 deg's answer
 wherever the loop closes on the branch.
@@ -288,9 +290,19 @@ def _closure(theta1, q, a1, a2, a4, alp4, s1):
 
 @njit(cache=True)
 def _on_branch(theta1, q, closure, tol, a1, a2, a4, alp4, s1, branch):
-    """A closed loop on the branch, in the closed form's angles (cos eta2 > 0)."""
+    """A closed loop on the branch."""
     side = q[4] + _reach(theta1, a1, a2, a4, alp4, s1)[0]
-    return closure <= tol and (abs(side) <= tol or side * branch > 0.0) and math.cos(q[1]) > 0.0
+    return closure <= tol and (abs(side) <= tol or side * branch > 0.0)
+
+
+@njit(cache=True)
+def _closed_form_angles(q):
+    """The same loop in the closed form's angles (cos eta2 >= 0): (theta2 + pi, pi - eta2,
+    pi - theta3, pi + eta3, S4) gives the same L2 (Rz(theta2 + pi) Ry(pi - eta2) = Rz(theta2)
+    Ry(eta2) Rx(pi): the rod's frame turned half a turn about the rod) and L3 M4."""
+    if not math.cos(q[1]) < 0.0:
+        return q
+    return np.array([q[0] + math.pi, math.pi - q[1], math.pi - q[2], math.pi + q[3], q[4]])
 
 
 @njit(cache=True)
@@ -353,10 +365,11 @@ def _sweep(theta1, s1, ok, q0, a1, a2, a4, alp4, tol, max_iterations, printed, u
             code[i] = 3 + 2 * how                                   # loop open
         elif branch != 0 and abs(side[i]) > closure_tol[i] and side[i] * branch < 0.0:
             code[i] = 4 + 2 * how                                   # other branch
+        answer = _closed_form_angles(q) if branch != 0 and code[i] == how else q
         for k in range(5):
-            q_out[i, k] = q[k]
+            q_out[i, k] = answer[k]
         closure[i] = r
-        guess = q
+        guess = q                                   # the sweep goes on from the Newton's own answer
     return code, q_out, closure, steps, side
 
 

@@ -115,11 +115,11 @@ def test_the_unchecked_newton_says_what_it_found():
     assert at46.closure > 1e3 * position.closure_tolerance(EXAMPLE, 0.0)
     assert at48.converged and at48.branch == -1.0
     assert at48.s4 == pytest.approx(closed_form(EXAMPLE, [48.0], -1)["s4"][0], abs=1e-6)
-    for d in (46.0, 48.0):
-        for branch in (1, -1):
-            asked = gsc.analyse(EXAMPLE, [d], branch=branch)
-            assert asked.status.iloc[0] == position.RESTARTED
-            assert_on_branch(EXAMPLE, asked, branch)
+    for d, branch, status in ((46.0, 1, position.RESTARTED), (46.0, -1, position.RESTARTED),
+                              (48.0, 1, position.RESTARTED), (48.0, -1, position.NEWTON)):
+        asked = gsc.analyse(EXAMPLE, [d], branch=branch)
+        assert asked.status.iloc[0] == status
+        assert_on_branch(EXAMPLE, asked, branch)
     with pytest.raises(ConvergenceError, match="does not close") as error:
         gsc.analyse(EXAMPLE, [46.0], branch=None, strict=True)
     assert error.value.angle_deg == 46.0
@@ -178,6 +178,8 @@ def test_angles_are_wrapped():
     for name in ("eta2", "eta3"):
         values = frame[name].dropna()
         assert ((values >= -180.0) & (values < 180.0)).all(), name
+    turned = frames[4]                                  # the slider axis at 90 deg: its frame upside down
+    assert turned.converged.all() and np.max(angle_gap(turned.eta3, 180.0)) < 1e-5
     assert gsc.wrapped_deg(np.array([-1e-300, 2 * np.pi, 7 * np.pi]), False).tolist() == [0.0, 0.0, 180.0]
     assert gsc.wrapped_deg(np.array([np.pi, -np.pi, 3 * np.pi, 1e-300]), True).tolist() == [-180.0, -180.0, -180.0, np.degrees(1e-300)]
 
