@@ -23,9 +23,9 @@ What a Newton that stops has found is checked (register D170):
   six equations: always off the plane, where five variables cannot close the loop, D085, and
   in the plane from a poor start) the status says "loop open";
 - *branch*: the rod reaches the slider axis at two points, S4 = -b +- sqrt(b^2 - c) (the roots
-  of |Q - P| = a2); ``branch`` is the sign of S4 + b (+1: the root the thesis's example runs on
-  and ``slider_crank.kinematics`` keeps, -1 the other assembly; 0 where the two meet to the
-  closure tolerance).  The caller asks for one (default +1); a stopped Newton that is not a
+  of |Q - P| = a2); ``branch`` is the sign of S4 + b = (Q - P) . (-k4), the rod's reach along
+  the slider's travel (+1: the root the thesis's example runs on and ``slider_crank.kinematics``
+  keeps, -1 the other assembly; 0 where the two meet, to the closure tolerance).  The caller asks for one (default +1); a stopped Newton that is not a
   closed loop on it is tried again from the closed form on that branch where the
   five-variable loop closes there; what still misses it says "loop open" or "other branch".
   A closed loop on it is given in the closed form's angles (cos eta2 > 0; the other

@@ -190,3 +190,22 @@ def test_branch_argument_is_checked():
             gsc.analyse(EXAMPLE, [0.0], branch=bad)
         with pytest.raises(error):
             position.positions(EXAMPLE, [0.0], branch=bad)
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_the_branch_is_the_rods_reach_along_the_slider_travel(seed):
+    """S4 + b = (Q - P) . (-k4): the branch is the side of the rod's normal plane the slider is
+    on (``slider_crank.kinematics`` on each root, spatial configurations, harmonic S1)."""
+    rng = np.random.default_rng(200 + seed)
+    inputs = GscInputs(a4=rng.uniform(-10.0, 10.0), alpha4_deg=rng.uniform(0.0, 360.0), s1=rng.uniform(-5.0, 5.0),
+                       alpha=float(rng.choice([0.0, 1.0])))
+    th = np.radians(np.arange(0.0, 360.0, 7.0))
+    s1 = inputs.axial(th)[0]
+    for branch in (1, -1):
+        kin = kinematics(inputs, th, np.stack(inputs.axial(th)), branch=branch)
+        reach = (kin.Q - kin.P) @ -inputs.k4
+        side = kin.s4 + inputs.a1 * np.sin(inputs.alpha4) * np.sin(th) + s1 * np.cos(inputs.alpha4)
+        np.testing.assert_allclose(reach, side, atol=1e-12 * inputs.a2)
+        assert (np.sign(reach) == branch).all()
+        printed = position.positions(inputs, th, branch=branch)
+        assert (printed.branch[printed.stopped] == np.sign(printed.q[printed.stopped, 4] + (side - kin.s4)[printed.stopped])).all()
