@@ -68,9 +68,14 @@ def assert_on_branch(inputs: GscInputs, frame, branch: int, scale: float = 1e-6)
 
 @pytest.fixture(scope="module")
 def single_angle_calls():
-    """``analyse`` of the example at each whole degree of the turn, one call per angle."""
-    return {quirks: gsc.pd.concat([gsc.analyse(EXAMPLE, [d], quirks) for d in TURN], ignore_index=True)
-            for quirks in (GSC_PRINTED, PRINTED_FIXED)}
+    """``analyse`` of the example at each whole degree of the turn, one call per angle (as
+    printed); the same positions' loads with two sign bugs fixed (D086, D088)."""
+    calls = [gsc.analyse(EXAMPLE, [d], GSC_PRINTED) for d in TURN]
+    runs = [position.positions(EXAMPLE, np.radians([d])) for d in TURN]
+    solved = position.PositionRun(*(np.concatenate([getattr(r, k) for r in runs])
+                                    for k in ("q", "status", "closure", "iterations", "branch")))
+    return {GSC_PRINTED: gsc.pd.concat(calls, ignore_index=True),
+            PRINTED_FIXED: gsc.analyse(EXAMPLE, TURN, PRINTED_FIXED, positions=solved)}
 
 
 def test_every_single_angle_call_of_the_example_is_the_complex_number_analysis(single_angle_calls):
