@@ -150,7 +150,7 @@ def _raise_first(status: np.ndarray, deg: np.ndarray, closure: np.ndarray, sign:
     errors = {position.CANNOT_ASSEMBLE: (AssemblyError, "GSC: the rod cannot reach the slider axis"),
               position.NOT_CONVERGED: (ConvergenceError, "GSC: Newton-Raphson and DFP did not converge"),
               position.LOOP_OPEN: (ConvergenceError, "GSC: the Newton stopped where the loop does not close "
-                                   "(off the plane five joint variables cannot close it, D085)"),
+                                   "(off the plane five joint variables cannot close it, D085; in it, a poor start)"),
               position.OTHER_BRANCH: (ConvergenceError, "GSC: the Newton closed the loop on the other assembly"),
               DEAD_CENTRE: (SingularPositionError, "GSC: dead centre, the crank torque cannot be balanced")}
     for i, s in enumerate(status):

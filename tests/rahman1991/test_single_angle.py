@@ -214,3 +214,23 @@ def test_the_branch_is_the_rods_reach_along_the_slider_travel(seed):
         assert (np.sign(reach) == branch).all()
         printed = position.positions(inputs, th, branch=branch)
         assert (printed.branch[printed.stopped] == np.sign(printed.q[printed.stopped, 4] + (side - kin.s4)[printed.stopped])).all()
+
+
+def test_the_fuzz_check_flags_a_converged_row_that_is_not_the_position():
+    """The fuzz's check (harness/scenes/rahman1991/fuzz.py) passes the analysis and flags a
+    row moved to the other root, off its reported branch, in the other angles, or open."""
+    from linkrepro.harness.scenes.rahman1991.fuzz import CHECKS
+    check = CHECKS["gsc_closes"]
+    call = ([], {"inputs": EXAMPLE, "crank_deg": [48.0, 200.0]})
+    frame = gsc.analyse(EXAMPLE, [48.0, 200.0])
+    assert check(call, frame) is None and check(([], {"branch": -1}), gsc.analyse(EXAMPLE, branch=-1)) is None
+    spatial = GscInputs(a4=30.0, s1=3.5)
+    assert check(([spatial], {"quirks": GSC_CORRECTED}), gsc.analyse(spatial, quirks=GSC_CORRECTED)) is None
+    other = closed_form(EXAMPLE, [48.0], -1)["s4"][0]
+    broken = [frame.assign(s4=[other, frame.s4[1]]), frame.assign(branch=[-1.0, 1.0]),
+              frame.assign(closure=[1.0, 0.0]),
+              frame.assign(theta2=(frame.theta2 + 180.0) % 360.0, eta2=180.0 - frame.eta2,
+                           theta3=(180.0 - frame.theta3) % 360.0, eta3=frame.eta3 + 180.0)]
+    words = ["does not close", "branch -1 reported", "closure 1 passes", "is not the closed form's"]
+    for bad, said in zip(broken, words):
+        assert said in check(call, bad)

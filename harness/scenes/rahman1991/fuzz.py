@@ -1,8 +1,8 @@
 """Rahman (1991)'s part of the fuzz (``harness/fuzz.py``): the generalized slider-crank's
 analysis and its printed position sweep in the port, the input dataclass; the names their call
 texts use; the NaN they document (scrubbed: the rows that hold no answer); the check a row
-reported converged must pass (its loop closes, on its branch).  The class "single-angle calls"
-(issue 31): ``analyse`` at one crank angle, on the thesis's planar example, random planar
+reported converged must pass (its loop closes, on its branch).  The class of single-angle
+calls: ``analyse`` at one crank angle, on the thesis's planar example, random planar
 configurations (where the five-variable loop closes) and the spatial ones, each branch."""
 from __future__ import annotations
 
