@@ -6,9 +6,10 @@ angles in radians (degrees only in ``Geometry.alpha4_deg`` and in error messages
 Geometry (eqs. 2.3, 2.4, 2.6).  Crank pin P = (a1 cos th1, a1 sin th1, s1); crank frame
 {2} at P with axes M1R = Rz(th1).  Slider point Q = (-a4, -s4 sin alpha4, -s4 cos alpha4):
 the slider moves along k4 = (0, sin alpha4, cos alpha4) without rotating.  |Q - P| = a2 is
-s4^2 + 2 b s4 + c = 0; we keep the root s4 = -b + sqrt(b^2 - c) at every angle: it is the
-one the listing's first estimate sqrt(a2^2 - (a1 + a4)^2) = 7.416 converges to at th1 = 0
-for the default data (7.544; the other root is -7.270).  The two roots meet only where
+s4^2 + 2 b s4 + c = 0; we keep the root s4 = -b + sqrt(b^2 - c) at every angle (``branch``
++1, the default): it is the one the listing's first estimate sqrt(a2^2 - (a1 + a4)^2) = 7.416
+converges to at th1 = 0 for the default data (7.544; the other root, ``branch`` -1, is
+-7.270), and the one Rahman's (1991) example runs on.  The two roots meet only where
 b^2 = c, i.e. where the rod is perpendicular to k4 (the edge of assembly).
 Rod frame {3} at Q: R2 = M1R Rz(theta2) Ry(eta2) with first column u = (Q - P)/a2,
 theta2 in [0, 2 pi), cos(eta2) > 0.  The crank pin is read as a Hooke joint (axes k1 and
@@ -78,7 +79,7 @@ def _rz(c, s, zero, one):
 Geometry = CsspInputs
 
 
-def kinematics(geom: Geometry, theta1_rad, s1_jet=None) -> SimpleNamespace:
+def kinematics(geom: Geometry, theta1_rad, s1_jet=None, branch: int = 1) -> SimpleNamespace:
     """Positions (in), velocities (in/s), accelerations (in/s^2) over crank angles (rad).
 
     ``geom``: the loop's inputs (``CsspInputs``) or its numbers as one precision holds them
@@ -86,6 +87,8 @@ def kinematics(geom: Geometry, theta1_rad, s1_jet=None) -> SimpleNamespace:
 
     ``s1_jet``: the crank's axial offset S1 and its first two time derivatives (3, n), for a
     crank that slides as it turns (Rahman 1991, eq. 28); by default the constant geom.s1.
+
+    ``branch``: the root of |Q - P| = a2 kept, s4 = -b + branch sqrt(b^2 - c) (+1 or -1).
 
     Attributes X, Xd, Xdd for X in P, Q, s4, u, M1R, R2, theta2, eta2; w2, alpha2 (rad/s,
     rad/s^2, rod angular velocity and acceleration); n2; ``jets`` holds them as (3, n, ...);
@@ -95,6 +98,8 @@ def kinematics(geom: Geometry, theta1_rad, s1_jet=None) -> SimpleNamespace:
     """
     if not isinstance(geom, (CsspInputs, LoopConstants)):
         raise TypeError(f"geom must be CsspInputs or LoopConstants, got {type(geom).__name__}")
+    if isinstance(branch, bool) or branch not in (1, -1):
+        raise ValueError(f"branch must be +1 or -1, got {branch!r}")
     th = angles_rad("theta1_rad", theta1_rad)
     deg, n = np.degrees(th), th.size
     one, zero = np.zeros((3, n)), np.zeros((3, n))
@@ -112,7 +117,7 @@ def kinematics(geom: Geometry, theta1_rad, s1_jet=None) -> SimpleNamespace:
         raise AssemblyError("CSSP: the rod cannot reach the slider line", float(deg[i]),
                             discriminant=float(disc[0, i]))
     _refuse(np.sqrt(disc[0]) / geom.a2, deg, "the rod is perpendicular to the slider axis")
-    s4 = _sqrt(disc) - b
+    s4 = (_sqrt(disc) if branch == 1 else -_sqrt(disc)) - b
     Q = np.stack([-geom.a4 * one, -sa * s4, -ca * s4], axis=-1)
     u = (Q - P) / geom.a2
     vx, vy = _mul(cth, u[..., 0]) + _mul(sth, u[..., 1]), _mul(cth, u[..., 1]) - _mul(sth, u[..., 0])

@@ -25,7 +25,6 @@ from linkrepro.port.rahman1996.balance import CSSP_PRINTED, CRANK_DEG, _listing_
 from linkrepro.port.rahman1996.data import CsspInputs
 from linkrepro.port.rahman1996.listing import printed_inverse
 from linkrepro.port.rahman1991.data import GscInputs
-from linkrepro.port.rahman1991.position import NEWTON
 #: ten times the examples under HYPOTHESIS_PROFILE=thorough (make fuzz; max_examples 1000 there, 100 by default)
 MORE = max(1, settings.default.max_examples // 100)
 
@@ -165,7 +164,7 @@ def assert_1991_method_is_the_build(inputs: GscInputs) -> str:
     g = geometry(inputs)
     leg, leg_err = outcome(lambda: rahman1996.cssp(**g))
     run = sweep_1991(g)
-    solved = run.status == NEWTON
+    solved = run.stopped                      # the build checks no closure: a stop is its answer
     if leg_err is None:
         assert solved.all()
         assert np.array_equal(run.q, leg["positions"][0])

@@ -3,9 +3,9 @@
 The 1991 thesis printed no program; its method's Newton is the first pass of the 1996 CSSP
 program by the same author.  So its differential is the 1991 method (``rahman1991.position``)
 run in the 1996 build's arithmetic (``BUILD_1996``: REAL*4 inputs, the listing's INVERSE,
-10-deg steps, no DFP fallback) against the legacy 1996 build's first-pass positions, on the
-1991 example (a1 = 12, a2 = 50 in, 50 rpm) over its grid's range and beyond, as
-tests/rahman1996/test_differential.py does.
+10-deg steps, no DFP fallback, no branch check) against the legacy 1996 build's first-pass
+positions, on the 1991 example (a1 = 12, a2 = 50 in, 50 rpm) over its grid's range and
+beyond, as tests/rahman1996/test_differential.py does.
 """
 from __future__ import annotations
 
@@ -15,7 +15,7 @@ from ....checks import LARGEST
 from ....errors import AssemblyError, ConvergenceError
 from ....legacy import rahman1996
 from ....port.rahman1991.data import GscInputs
-from ....port.rahman1991.position import BUILD_1996, CANNOT_ASSEMBLE, NEWTON, PositionRun, positions
+from ....port.rahman1991.position import BUILD_1996, CANNOT_ASSEMBLE, PositionRun, positions
 from ....port.rahman1996.balance import CRANK_DEG
 from ....port.rahman1996.data import Constants, CsspInputs
 from ...differential import Domain, Outcome, Parameter, Program, Thesis
@@ -43,13 +43,15 @@ def sweep_1991(g: dict) -> PositionRun:
     """The 1991 method's Newton in the 1996 build's arithmetic over the build's crank angles,
     stopping at its first failure."""
     pi = Constants.of(CsspInputs(**g), True).pi
-    return positions(GscInputs(**g), CRANK_DEG * (pi / 180.0), use_dfp=False, stop_at_failure=True, setup=BUILD_1996)
+    return positions(GscInputs(**g), CRANK_DEG * (pi / 180.0), use_dfp=False, stop_at_failure=True, setup=BUILD_1996,
+                     branch=None)
 
 
 def port_positions(g: dict) -> dict:
-    """The 1991 sweep's positions; where it stops, the error of its status at that crank angle."""
+    """The 1991 sweep's positions (where its Newton stopped, the loop closed or not: the build
+    checks no closure); where it stops, the error of its status at that crank angle."""
     run = sweep_1991(g)
-    solved = run.status == NEWTON
+    solved = run.stopped
     if not solved.all():
         k = int(np.argmin(solved))
         error = AssemblyError if run.status[k] == CANNOT_ASSEMBLE else ConvergenceError

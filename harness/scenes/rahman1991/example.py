@@ -50,7 +50,9 @@ def grid(engine: str) -> pd.DataFrame:
 
 
 def _ok(frame: pd.DataFrame) -> pd.DataFrame:
-    return frame[frame["converged"] & frame["F1i"].notna()]
+    """The rows that hold their engine's answer with its loads: the thesis's claims are about
+    the printed method's numbers, its open loops (D085) included."""
+    return frame[frame["status"].isin(gsc.ANSWERED) & frame["F1i"].notna()]
 
 
 def _planar_gap(frame: pd.DataFrame) -> float:
@@ -88,11 +90,11 @@ def _spikes(frame: pd.DataFrame, engine: str) -> dict:
 
 
 def _iterations(frame: pd.DataFrame, engine: str, text: pd.DataFrame) -> dict:
-    """Newton steps per converged position (the last, small step counted), planar points."""
+    """Newton steps per position the Newton stopped at (the last, small step counted), planar points."""
     if engine != "port_printed":
         return {}
     lo, hi = (float(v) for v in text.loc["iterations", "value"].split())
-    ok = frame[frame.converged]
+    ok = frame[frame.status.isin(gsc.ANSWERED)]
     planar = ok[(ok.alpha4_deg == 270.0) & (ok.s1 == 0.0)].iterations
     spatial = ok.drop(planar.index).iterations
     median = float(planar.median())
@@ -148,29 +150,20 @@ def legacy_failure(inputs: GscInputs) -> tuple[str, float] | None:
     return None
 
 
-def convergence_study(printed: pd.DataFrame | None = None) -> pd.DataFrame:
+def convergence_study() -> pd.DataFrame:
     """Which configurations converge over a full turn (0..360 step 1, stopping at the first
     failure as the thesis's program does), per engine; and whether each one assembles.
 
-    A configuration of the example's grid is read off ``printed`` (its sweep by the printed
-    method, which goes on after a failure): until its first failure that sweep is the one that
-    stops there, position for position, so a position fails in one where it fails in the other
-    and both verdicts are the same (tests/rahman1991/test_analysis.py checks it)."""
+    "Converge" is the thesis's word: the printed Newton stops (every |Delta| <= 1e-7) at every
+    position, closed loop or not (``position.STOPPED``; off the plane the loop cannot close,
+    D085), unchecked (``branch=None``).  One pass with the DFP fallback: until its first Newton
+    failure it is the pass without it, so that pass converges where this one never ran DFP."""
     configs = [GscInputs(a4=a4, s1=s1) for a4, s1 in itertools.product(gsc.GRID_A4, STUDY_S1)]
     configs += [GscInputs(a4=20.0, alpha4_deg=al) for al in STUDY_ALPHA4]
     th = np.radians(gsc.CRANK_DEG)
-    swept = {}                     # (a4, alpha4_deg, s1) -> the statuses of the grid's sweep over th
-    for key, rows in (printed.groupby(["a4", "alpha4_deg", "s1"]) if printed is not None else []):
-        if len(rows) == th.size and np.allclose(np.radians(rows.crank_deg), th, rtol=0.0, atol=1e-12):
-            swept[key] = rows.status.to_numpy(str)
-    todo = [x for x in configs if (x.a4, x.alpha4_deg, x.s1) not in swept]
-    # one pass with DFP: until its first Newton failure it is the pass without DFP, so that
-    # pass converges where every position of this one is plain Newton
-    runs = dict(zip(todo, gsc_position.positions_batch(todo, th, use_dfp=True, stop_at_failure=True)))
-    status = [runs[x].status.astype(str) if x in runs else swept[(x.a4, x.alpha4_deg, x.s1)] for x in configs]
-    converged = [gsc_position.NEWTON, gsc_position.DFP_THEN_NEWTON]
-    verdicts = {"port Newton (1 deg steps)": [bool(np.all(s == gsc_position.NEWTON)) for s in status],
-                "port Newton + DFP (1 deg steps)": [bool(np.isin(s, converged).all()) for s in status]}
+    runs = gsc_position.positions_batch(configs, th, use_dfp=True, stop_at_failure=True, branch=None)
+    verdicts = {"port Newton (1 deg steps)": [bool(r.stopped.all() and not r.dfp.any()) for r in runs],
+                "port Newton + DFP (1 deg steps)": [bool(r.stopped.all()) for r in runs]}
     verdicts["legacy 1996 build (10 deg steps, REAL*4)"] = [legacy_failure(x) is None for x in configs]
     rows = []
     for k, inputs in enumerate(configs):
@@ -232,7 +225,7 @@ def legacy_on_grid(printed: pd.DataFrame) -> pd.DataFrame:
             row.update(replica=type(exc).__name__, replica_fail_deg=exc.angle_deg)
         else:
             ours = printed[(printed.a4 == a4) & (printed.alpha4_deg == al) & (printed.s1 == s1)].iloc[::10]
-            both = ours.converged.to_numpy()
+            both = ours.status.isin(gsc.ANSWERED).to_numpy()
             if both.any():
                 dtheta = np.degrees(np.mod(q[:, 0], 2 * np.pi)) - ours.theta2.to_numpy()
                 row.update(max_ds4_in=float(np.max(np.abs(q[both, 4] - ours.s4.to_numpy()[both]))),
@@ -257,7 +250,7 @@ def run(out_dir: Path) -> dict:
     write_csv(diagnostics, target / "diagnostics.csv", "%.6g")
     progress.note(NAME, "convergence study")
     start = time.perf_counter()
-    study = convergence_study(frames["port_printed"])
+    study = convergence_study()
     timings["convergence study"] = time.perf_counter() - start
     study.to_csv(target / "convergence.csv", index=False)
     claims = measure_claims(frames, convergence_limits(study))

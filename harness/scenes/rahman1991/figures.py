@@ -44,6 +44,7 @@ from matplotlib.transforms import ScaledTranslation, blended_transform_factory
 
 from ... import figures
 from ...report import draw_all
+from ....port.rahman1991.analysis import ANSWERED
 from .quantities import CONFIGURATION, JOINT_LOADS, POSITIONS
 
 IDEAL = {"a4": 0.0, "s1": 0.0, "alpha4_deg": 270.0}
@@ -97,16 +98,22 @@ def case_rows(frame: pd.DataFrame) -> dict[tuple, dict[str, np.ndarray]]:
     return cases
 
 
+def answered(rows: dict[str, np.ndarray]) -> np.ndarray:
+    """Where a case's rows hold their engine's answer (``analysis.ANSWERED``)."""
+    return np.isin(rows["status"].astype(str), ANSWERED)
+
+
 def case_key(where: dict) -> tuple:
     return tuple(np.round(float(where[col]), 6) for col in IDEAL)
 
 
 def select(cases: dict[tuple, dict], where: dict, quantity: str) -> tuple[np.ndarray, np.ndarray, int]:
-    """Crank angles (deg) and values of one case (NaN where not converged); and how many are not finite."""
+    """Crank angles (deg) and values of one case (NaN where its engine gave no answer: the
+    printed method's open loops are drawn, D085); and how many are not finite."""
     rows = cases.get(case_key(where))
     if rows is None:
         return np.empty(0), np.empty(0), 0
-    y = np.where(rows["converged"].astype(bool), rows[quantity].astype(float), np.nan)
+    y = np.where(answered(rows), rows[quantity].astype(float), np.nan)
     return rows["crank_deg"].astype(float), y, int((~np.isfinite(y)).sum())
 
 
@@ -325,7 +332,7 @@ def s4_facts(cases: dict[str, dict]) -> str:
             found = []
             for key, where in drawn_cases().items():
                 rows = rows_of.get(key)
-                k = np.flatnonzero(rows["status"] == status) if rows is not None else []
+                k = np.flatnonzero(np.char.startswith(rows["status"].astype(str), status)) if rows is not None else []
                 if len(k) == 0:
                     continue
                 s4, at = rows["s4"].astype(float), rows["crank_deg"].astype(float)[k]
@@ -365,7 +372,7 @@ def load_facts(rows_of: dict[tuple, dict], drawn: list[tuple[str, Row]]) -> str:
         if rows is None:
             continue
         values = np.stack([rows[q].astype(float) for q in quantities], axis=1)
-        missing = ~rows["converged"].astype(bool) | ~np.isfinite(values).all(axis=1)
+        missing = ~answered(rows) | ~np.isfinite(values).all(axis=1)
         for status in sorted(set(rows["status"][missing])):
             at = rows["crank_deg"][missing & (rows["status"] == status)]
             text.append(f"No finite load for {case_words(where)} at {_angles(at)} deg (status: {status}).")

@@ -8,6 +8,7 @@ axes (port/rahman1991/forces.py): 1F1, 1T1 in {1} (the torque about {1}'s origin
 """
 from __future__ import annotations
 
+from ....port.rahman1991.position import CLOSURE_RTOL
 from ...quantities import Quantity as Q
 
 #: a configuration of the example's grid (section 3.1)
@@ -25,7 +26,7 @@ JOINT_LOADS = {"F1": ("force 1F1, crank on frame", "lbf"),
                "T4": ("torque 4T4, slider on frame", "lbf in")}
 POSITIONS = {
     "crank_deg": Q("crank angle theta1", "deg"),
-    "converged": Q("the position converged", ""),
+    "converged": Q(f"the loop closes (closure within {CLOSURE_RTOL:g} of its size) on the asked branch", ""),
     "s4": Q("slider displacement S4", "in"),
     "theta2": Q("rod angle theta2 at the crank pin", "deg"),
     "eta2": Q("rod angle eta2 at the crank pin", "deg"),
@@ -36,11 +37,11 @@ POSITIONS = {
 }
 #: diagnostics.csv, convergence.csv, legacy.csv
 RUNS = {
-    "status": Q("the position solver's status", ""),
+    "status": Q("how the position solver reached its answer, or why there is none", ""),
     "closure": Q("loop-closure error ||M1 L2 L3 M4 - I|| at the answer", ""),
     "engine": Q("engine or solver", ""),
     "assembles": Q("the mechanism assembles at every crank angle", ""),
-    "converges": Q("the solver converges over a full turn", ""),
+    "converges": Q("the solver converges over a full turn (its Newton stops at every angle)", ""),
     "legacy": Q("the 1996 legacy build on the point: converged, or the error it raised", ""),
     "legacy_fail_deg": Q("crank angle where the 1996 build failed", "deg"),
     "replica": Q("the port's replica of the build's first pass: converged, or the error", ""),
