@@ -38,8 +38,10 @@ import numpy as np
 
 from ..checks import INTEGER_MAX, as_real4, integer, link_length, parameter, real4_array, speed_rpm, weight_lbf
 from ..errors import AssemblyError, SingularPositionError
-from ..port.ali1977.conditioning import check_precision, condition, spread
-from ..port.ali1977.fourbar import Cognate, Lengths, warn_listing_beta
+from ..port.ali1977 import case1, case2, case3
+from ..port.ali1977.fourbar import Lengths, warn_listing_beta
+from ..port.ali1977.quirks import PRINTED
+from ..port.ali1977.structure import Section
 from . import _ali1977 as _f
 
 #: held around every call into the compiled Ali (1977) FORTRAN (static storage)
@@ -94,21 +96,15 @@ def _raise_on_status(istat: int, deg: np.ndarray, arrays: dict, program: str) ->
             raise SingularPositionError(f"{program}: non-finite {name}", float(deg[i]))
 
 
-def _finish(out: dict, lengths: tuple, alp: float, cognate: bool, program: str) -> dict:
-    """The port's precision rule on a listing's results (``port.ali1977.conditioning``): a
-    SingularPositionError at a toggle to working precision, a PrecisionWarning where fewer than
-    half the REAL*4 digits are left; ``condition`` added, per input angle."""
-    l1, l2, l3, l4, l5 = lengths
-    loops, links = [(l1, l3, l4, l5)], list(lengths)
-    if cognate:
-        cog = Cognate.of(Lengths(*lengths), alp, PI_PRINTED)
-        loops.append((cog.cl1, cog.cl3, cog.cl4, cog.cl5))
-        links += [cog.cl1, cog.cl2, cog.cl3, cog.cl4, cog.cl5]
-    link_spread = spread(links)
-    kappa = condition(out["deg"], PI_PRINTED, loops, link_spread)
-    check_precision(out["deg"], kappa, link_spread, True, program)
-    out["condition"] = kappa
-    return out
+def _finish(out: dict, run, program: str) -> dict:
+    """The port's precision rule on a listing's results (``port.ali1977.conditioning``), the
+    listing's own algebra taken from the port with the listing's bugs (``run``: its
+    ``run_*``, which computes what the FORTRAN does, bit for bit): a SingularPositionError at a
+    toggle or a zero of the listing's Cramer determinant to working precision, a
+    ListingBugWarning near such a zero, a PrecisionWarning where fewer than half the REAL*4
+    digits are left; ``condition`` and ``error_bound`` added, per input angle."""
+    _, finish = run(out["deg"])
+    return finish(out, program, stacklevel=5)
 
 
 def case1_source(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_SOURCE_PRINTED,
@@ -127,7 +123,8 @@ def case1_source(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_SOURCE_PRI
                                                    area, modulus, inertia, step_deg, n)
     out = {"deg": deg, "xp": xp, "yp": yp, "dx": dx, "dy": dy, "rot": rot}
     _raise_on_status(istat, deg, {k: v for k, v in out.items() if k != "deg"}, "KED1S")
-    return _finish(out, (l1, l2, l3, l4, l5), alp, False, "KED1S")
+    return _finish(out, lambda d: case1.run_source_case1(d, Lengths(l1, l2, l3, l4, l5), alp, rpm, mass_lbf,
+                                                         Section(area, modulus, inertia), PRINTED), "KED1S")
 
 
 def case1_cognate(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_PRINTED,
@@ -148,7 +145,9 @@ def case1_cognate(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_P
             l1, l2, l3, l4, l5, alp, rpm, mass_lbf, area, modulus, inertia, step_deg, n)
     out = {"deg": deg, "xp": xp, "yp": yp, "cxp": cxp, "cyp": cyp, "dx": dx, "dy": dy, "rot": rot}
     _raise_on_status(istat, deg, {k: v for k, v in out.items() if k != "deg"}, "KED1C")
-    return _finish(out, (l1, l2, l3, l4, l5), alp, True, "KED1C")
+    return _finish(out, lambda d: case1.run_cognate_case1(d, Lengths(l1, l2, l3, l4, l5), alp, rpm, mass_lbf,
+                                                          Section(area, modulus, inertia), PRINTED, warn_beta=False),
+                   "KED1C")
 
 
 def case2_source(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_PRINTED,
@@ -165,7 +164,8 @@ def case2_source(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_PR
                                                    modulus, inertia, step_deg, n)
     out = {"deg": deg, "xp": xp, "yp": yp, "dx": dx, "dy": dy, "rot": rot}
     _raise_on_status(istat, deg, {k: v for k, v in out.items() if k != "deg"}, "KED2S")
-    return _finish(out, (l1, l2, l3, l4, l5), alp, False, "KED2S")
+    return _finish(out, lambda d: case2.run_case2_source(d, Lengths(l1, l2, l3, l4, l5), alp, rpm, density,
+                                                         Section(area, modulus, inertia), case2.LISTING), "KED2S")
 
 
 def case2_cognate(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_PRINTED,
@@ -184,7 +184,9 @@ def case2_cognate(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_P
                                                              modulus, inertia, step_deg, n)
     out = {"deg": deg, "xp": xp, "yp": yp, "cxp": cxp, "cyp": cyp, "dx": dx, "dy": dy, "rot": rot}
     _raise_on_status(istat, deg, {k: v for k, v in out.items() if k != "deg"}, "KED2C")
-    return _finish(out, (l1, l2, l3, l4, l5), alp, True, "KED2C")
+    return _finish(out, lambda d: case2.run_case2_cognate(d, Lengths(l1, l2, l3, l4, l5), alp, rpm, density,
+                                                          Section(area, modulus, inertia), case2.COGNATE_LISTING,
+                                                          warn_beta=False), "KED2C")
 
 
 def case3_source(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_PRINTED,
@@ -206,7 +208,8 @@ def case3_source(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_PR
     out = {"deg": deg, "xp": xp, "yp": yp, "dx": nodes[:, 0, 0], "dy": nodes[:, 0, 1],
            "rot": nodes[:, 0, 2], "nodes": nodes}
     _raise_on_status(istat, deg, {"xp": xp, "yp": yp, "nodes": nodes}, "KED3S")
-    return _finish(out, (l1, l2, l3, l4, l5), alp, False, "KED3S")
+    return _finish(out, lambda d: case3.run_case3_source(d, 5, Lengths(l1, l2, l3, l4, l5), alp, rpm, density,
+                                                         Section(area, modulus, inertia), case3.LISTING), "KED3S")
 
 
 def case3_cognate(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_PRINTED,
@@ -222,7 +225,9 @@ def case3_cognate(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_P
                                                              modulus, inertia, step_deg, n)
     out = {"deg": deg, "xp": xp, "yp": yp, "cxp": cxp, "cyp": cyp, "dx": dx, "dy": dy, "rot": rot}
     _raise_on_status(istat, deg, {k: v for k, v in out.items() if k != "deg"}, "KED3C")
-    return _finish(out, (l1, l2, l3, l4, l5), alp, True, "KED3C")
+    return _finish(out, lambda d: case3.run_case3_cognate(d, 5, Lengths(l1, l2, l3, l4, l5), alp, rpm, density,
+                                                          Section(area, modulus, inertia), case3.COGNATE_LISTING,
+                                                          warn_beta=False), "KED3C")
 
 
 def gmtra(a: np.ndarray) -> np.ndarray:

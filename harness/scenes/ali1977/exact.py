@@ -99,11 +99,6 @@ def case1_source(deg: float, lengths: Lengths = EXAMPLE.lengths, alp_deg: float 
 
 # --- The listings' own equations, any quirks, Cases I-III, source and cognate ---------------
 
-def _mp_matmul(a, b):
-    return [[mpmath.fsum(a[i][k] * b[k][j] for k in range(len(b))) for j in range(len(b[0]))]
-            for i in range(len(a))]
-
-
 def _transpose(a):
     return [list(row) for row in zip(*a)]
 
@@ -247,9 +242,20 @@ def _flexibility(r, l_in, l_cpl, l_fol, area, modulus, inertia, quirks):
 
 
 def _product(left, flex, right, load):
-    """left^T F right P (left 8 x 3, right 8 x k, load k): a 3-vector."""
-    product = _mp_matmul(_mp_matmul(_mp_matmul(_transpose(left), flex), right), [[p] for p in load])
-    return [row[0] for row in product]
+    """left^T F right P (left 8 x 3, right 8 x k, load k), a 3-vector, and the same product of the
+    entries' magnitudes (the deflection's size before cancellation); from the right, as
+    matrix-vector products."""
+    def apply(matrix, vector):
+        return [mpmath.fsum(x * v for x, v in zip(row, vector) if x and v) for row in matrix]
+
+    def chain(left, flex, right, load):
+        return apply(_transpose(left), apply(flex, apply(right, load)))
+
+    def magnitudes(matrix):
+        return [[abs(x) for x in row] for row in matrix]
+
+    return (chain(left, flex, right, load),
+            chain(magnitudes(left), magnitudes(flex), magnitudes(right), [abs(p) for p in load]))
 
 
 def _engine_inputs(program: str, alp, rpm, weight, section: Section, quirks):
@@ -313,12 +319,16 @@ def listing(program: str, deg: float, lengths: Lengths, alp: float | None, rpm: 
                              _beta2(mp, motion, beta, quirks), _joint_loads(motion, acc, weight_ * area, g, sign, quirks))
         else:
             delta = _case3(mp, motion, at, load, weight_ * area, area, modulus, inertia, n, quirks)
+        delta, magnitude = delta
         if cognate and not quirks.cognate_frame:                                             # D025
             c, s = mp.cos(motion.frame_angle), mp.sin(motion.frame_angle)
             delta = [delta[0] * c - delta[1] * s, delta[0] * s + delta[1] * c, delta[2]]
+            magnitude = [magnitude[0] * abs(c) + magnitude[1] * abs(s), magnitude[0] * abs(s) + magnitude[1] * abs(c),
+                         magnitude[2]]
         rho = [float(abs(_det(m)) / _det(m, absolute=True)) for m in solved]
         return {"dx": float(delta[0]), "dy": float(delta[1]), "rot": float(delta[2]), "extender": float(a2),
-                "rho": rho}
+                "rho": rho, "magnitude": float(mpmath.sqrt(magnitude[0] ** 2 + magnitude[1] ** 2
+                                                           + (a2 * magnitude[2]) ** 2))}
 
 
 def _det(m, absolute: bool = False):
@@ -385,30 +395,40 @@ def _case3(m, motion, at, load, density_area, area, modulus, inertia, n, quirks)
             left[3][5][2], right[3][5][2] = (a * d - b * i_tip) / r4, (a * d - b * e) / r4
         tip = _product(left[0], flex[0], right[0], loads[0])
         if n > 1 and quirks.tip_rotation_node_2:                                              # D035
-            tip[2] = _product([[row[2]] * 3 for row in left[0]], flex[1], right[1], loads[1])[0]
+            rotation = _product([[row[2]] * 3 for row in left[0]], flex[1], right[1], loads[1])
+            for part, turned in zip(tip, rotation):
+                part[2] = turned[0]
         return tip
-    return _coupled(m, motion, nodes, loads, positions, area, modulus, inertia, quirks)
+    return tuple(_coupled(m, motion, nodes, loads, positions, area, modulus, inertia, quirks, absolute)
+                 for absolute in (False, True))
 
 
 def _cramer_of(motion, r):
     return motion.point(r)[3]
 
 
-def _coupled(m, motion, nodes, loads, positions, ca, me, mi, quirks):
+def _coupled(m, motion, nodes, loads, positions, ca, me, mi, quirks, absolute=False):
     """case3._coupled_tip at one angle: the extender as n segments in series, every node
-    loaded, by unit loads at the tip (virtual work)."""
+    loaded, by unit loads at the tip (virtual work); with ``absolute`` of the magnitudes of the
+    directions, loads and beta (the deflection's size before cancellation)."""
     a1, _, a3, a4, _ = motion.links
     c, s = motion.ce, motion.se
+    moment_sign = -1
+    if absolute:
+        c, s, moment_sign = abs(c), abs(s), 1
+        loads = [[abs(p) for p in load] for load in loads]
+        nodes = [(None, None, [[abs(x) for x in row] for row in b]) for _, _, b in nodes]
     reactions = [mpmath.fsum(b[e][j] * p[j] for (_, _, b), p in zip(nodes, loads) for j in range(2))
                  for e in range(3, 8)]
     order = sorted(range(len(positions)), key=lambda k: positions[k])
     r = [positions[k] for k in order]
     h = [r[0]] + [r[k] - r[k - 1] for k in range(1, len(r))]
     axial = [loads[k][0] * c + loads[k][1] * s for k in order]
-    shear = [-loads[k][0] * s + loads[k][1] * c for k in order]
+    shear = [moment_sign * loads[k][0] * s + loads[k][1] * c for k in order]
     n_force = [mpmath.fsum(axial[j:]) for j in range(len(r))]
     v_force = [mpmath.fsum(shear[j:]) for j in range(len(r))]
-    m_force = [mpmath.fsum(shear[k] * r[k] for k in range(j, len(r))) - r[j] * v_force[j] for j in range(len(r))]
+    m_force = [mpmath.fsum(shear[k] * r[k] for k in range(j, len(r))) + moment_sign * r[j] * v_force[j]
+               for j in range(len(r))]
     arm = [r[-1] - x for x in r]
     axial_work = mpmath.fsum(h[j] / (ca * me) * n_force[j] for j in range(len(r)))
     shear_work = mpmath.fsum(h[j] ** 3 / (3 * me * mi) * v_force[j] + h[j] ** 2 / (2 * me * mi) * m_force[j]
@@ -421,7 +441,7 @@ def _coupled(m, motion, nodes, loads, positions, ca, me, mi, quirks):
               a4 / (ca * me), a3 / (ca * me), a3 / (3 * me * mi)]
     tip_beta = nodes[0][2]
     delta = []
-    for i, (un, uv, um) in enumerate(((c, -s, 0), (s, c, 0), (0, 0, 1))):
+    for i, (un, uv, um) in enumerate(((c, moment_sign * s, 0), (s, c, 0), (0, 0, 1))):
         value = un * axial_work + uv * (shear_work + arm_work) + um * moment_work
         delta.append(value + mpmath.fsum(tip_beta[3 + e][i] * e_flex[e] * reactions[e] for e in range(5)))
     return delta
