@@ -96,15 +96,15 @@ def source_case1(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = No
 
 def run_source_case1(deg: np.ndarray, lengths: Lengths, alp: float | None, rpm: float | None, mass_lbf: float,
                      section: Section, quirks: Quirks):
-    """source_case1 of checked angles ``deg``, before its precision check: the results, and the
-    check (``Linkage.finish`` with this run's poles and deflection size: call it with the results
-    to check, the legacy face's or these, and the program's name)."""
+    """source_case1 of checked angles ``deg``, before its checks: the results, and the checks
+    (``Linkage.finish`` with this run's poles and deflection size: call it with the results to
+    check, the legacy face's or these, and the program's name: a SingularPositionError where a
+    result is not finite, then the precision rule)."""
     mass_lbf = weight_lbf("mass_lbf", mass_lbf)
     expect("section", section, Section)
     mech = _source_linkage(deg, lengths, alp, rpm, quirks, "INTEGER").path_point(lengths.l2)
     dx, dy, rot, size = _case1_deflection(mech, mass_lbf, section, quirks)
     out = {"xp": mech.xp, "yp": mech.yp, "dx": dx, "dy": dy, "rot": rot}
-    check_finite(deg, "source", **out)
     link = mech.extra["linkage"]
     return out, functools.partial(link.finish, rho=link.pole_distance(mech), size=size, extender=lengths.l2)
 
@@ -129,7 +129,6 @@ def run_cognate_case1(deg: np.ndarray, lengths: Lengths, alp: float | None, rpm:
     dx, dy, rot, size = _case1_deflection(mech, mass_lbf, section, quirks)
     out = {"xp": mech.extra["xp"], "yp": mech.extra["yp"], "cxp": mech.extra["cxp"],
            "cyp": mech.extra["cyp"], "dx": dx, "dy": dy, "rot": rot}
-    check_finite(deg, "cognate", **out)
     link = mech.extra["linkage"]
     return out, functools.partial(link.finish, rho=link.pole_distance(mech), size=size,
                                   extender=mech.extra["cognate"].cl2)

@@ -22,7 +22,7 @@ from numba import njit
 
 from ...checks import angles_deg, as_real4, weight_lbf
 from .. import libm
-from .fourbar import Lengths, check_finite
+from .fourbar import Lengths
 from .cognate import _cognate_linkage
 from .data import EXAMPLE, _pi, expect
 from .source import _source_linkage
@@ -143,7 +143,6 @@ def run_case2_source(deg: np.ndarray, lengths: Lengths, alp: float | None, rpm: 
         delta = deflection(mech.beta, flex, loads, quirks, right=right)
     out = {"xp": mech.xp, "yp": mech.yp, "dx": delta[:, 0].astype(np.float64),
            "dy": delta[:, 1].astype(np.float64), "rot": delta[:, 2].astype(np.float64)}
-    check_finite(deg, "case II source", **out)
     link = mech.extra["linkage"]
     return out, functools.partial(link.finish, rho=link.pole_distance(mech),
                                   size=magnitude(mech.beta, flex, loads, right), extender=lengths.l2)
@@ -189,7 +188,6 @@ def run_case2_cognate(deg: np.ndarray, lengths: Lengths, alp: float | None, rpm:
         dx, dy = dx * c - dy * s, dx * s + dy * c
     out = {"xp": e["xp"], "yp": e["yp"], "cxp": e["cxp"], "cyp": e["cyp"], "dx": dx, "dy": dy,
            "rot": delta[:, 2].astype(np.float64)}
-    check_finite(deg, "case II cognate", **out)
     link = mech.extra["linkage"]
     return out, functools.partial(link.finish, rho=link.pole_distance(mech), size=size, extender=cog.cl2)
 

@@ -27,7 +27,7 @@ import numpy as np
 
 from ...checks import angles_deg, as_real4, parameter, weight_lbf
 from .. import libm
-from .fourbar import Lengths, check_finite
+from .fourbar import Lengths
 from .cognate import _cognate_linkage
 from .data import EXAMPLE, _pi, expect
 from .linkage import cramer_determinant
@@ -262,13 +262,12 @@ def _case3_on(linkage, sec: Section, positions, weights, all_nodes: bool):
             blocks = (mech for _, mech in _node_blocks(linkage, positions))
             tip, size, rho = _coupled_tip(blocks, loads, positions, linkage.lengths, sec, quirks)
     out = {"xp": xp, "yp": yp, "dx": tip[:, 0], "dy": tip[:, 1], "rot": tip[:, 2]}
+    finite = None
     if listing:     # the listing's output is every node: the legacy face checks xp, yp, then all nodes
-        check_finite(deg, "case III source", xp=out["xp"], yp=out["yp"], nodes=nodes)
+        finite = {"xp": out["xp"], "yp": out["yp"], "nodes": nodes}
         if all_nodes:
             out["nodes"] = nodes
-    else:
-        check_finite(deg, "case III source", **out)
-    return out, functools.partial(linkage.finish, rho=rho, size=size, extender=positions[0])
+    return out, functools.partial(linkage.finish, rho=rho, size=size, extender=positions[0], finite=finite)
 
 
 def case3_source(deg, n: int = 5, lengths: Lengths = EXAMPLE.lengths, alp: float | None = None,
@@ -366,7 +365,6 @@ def run_case3_cognate(deg: np.ndarray, n: int, lengths: Lengths, alp: float | No
         dx, dy = dx * c - dy * s, dx * s + dy * c
     out = {"xp": mech.extra["xp"], "yp": mech.extra["yp"], "cxp": mech.extra["cxp"], "cyp": mech.extra["cyp"],
            "dx": dx, "dy": dy, "rot": delta[:, 2].astype(np.float64)}
-    check_finite(deg, "case III cognate", **out)
     return out, functools.partial(mech.extra["linkage"].finish, rho=rho, size=size, extender=cog.cl2)
 
 

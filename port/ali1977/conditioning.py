@@ -130,9 +130,7 @@ def check_precision(deg, kappa, real4: bool, who: str, stacklevel: int = 3, rho=
     if (base >= 1.0).any():
         i = int(np.argmax(base >= 1.0))
         if rho is not None and POLE_FACTOR / rho[i] >= CONDITION_FACTOR * kappa[i]:
-            raise SingularPositionError(f"{who}: at a zero of the listing's Cramer determinant R1 "
-                                        f"({_named(bugs)}): no digit of the deflections can be trusted",
-                                        float(deg[i]), relative_determinant=float(rho[i]))
+            raise_at_pole(who, deg, rho, bugs, i, always=True)
         raise SingularPositionError(f"{who}: at a toggle to working precision (transmission angle within "
                                     "rounding of 0 or 180 deg): no digit of the deflections can be trusted",
                                     float(deg[i]), condition=float(kappa[i]))
@@ -156,6 +154,17 @@ def check_precision(deg, kappa, real4: bool, who: str, stacklevel: int = 3, rho=
                                        f"stored with ({why})", float(deg[i]), condition=float(kappa[i]),
                                        relative_error=float(bound[i])), stacklevel=stacklevel)
     return bound
+
+
+def raise_at_pole(who: str, deg, rho, bugs: tuple, i: int, always: bool = False) -> None:
+    """SingularPositionError at input angle ``deg[i]`` (deg) naming the listing's bugs, if
+    ``always`` or if no digit is left there of the listing's Cramer determinant (``rho[i]``
+    within POLE_FACTOR units of rounding of 0: a result that is not finite there is the pole's);
+    nothing where ``rho`` is None (no bug of the listing in the matrix)."""
+    if rho is not None and (always or POLE_FACTOR * DOUBLE_UNIT >= rho[i]):
+        raise SingularPositionError(f"{who}: at a zero of the listing's Cramer determinant R1 ({_named(bugs)}): "
+                                    "no digit of the deflections can be trusted", float(deg[i]),
+                                    relative_determinant=float(rho[i]))
 
 
 def _named(bugs) -> str:

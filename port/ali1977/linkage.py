@@ -17,7 +17,8 @@ from typing import ClassVar
 import numpy as np
 from numba import njit
 
-from .conditioning import cancellation, check_precision, condition, relative_determinant, spread
+from ...errors import SingularPositionError
+from .conditioning import cancellation, check_precision, condition, raise_at_pole, relative_determinant, spread
 from .data import _pi
 from .fourbar import Lengths, check_finite
 from .quirks import Quirks
@@ -162,19 +163,27 @@ class Linkage:
         return np.concatenate(rho).min(axis=0)
 
     def finish(self, out: dict, who: str, stacklevel: int = 4, rho=None, size=None, extender: float = 1.0,
-               deflection: dict | None = None) -> dict:
-        """A program's results ``out`` checked for their precision (``conditioning``: raise at
-        a toggle or a listing's pole to working precision, warn near a listing's pole and where
-        half the digits are gone), with the per-angle ``condition`` and ``error_bound`` (the bound
-        on the relative error of the deflection vector, ``conditioning.expected_error``) added.  ``rho``
-        (``pole_distance``) and ``size`` (the deflection's terms, (N, 3), ``structure.magnitude``)
-        of the path point, whose extender is ``extender`` (in); ``deflection`` the dx, dy, rot
-        checked (default ``out``'s)."""
+               finite: dict | None = None) -> dict:
+        """A program's results ``out`` checked: a SingularPositionError at the first input angle
+        where a result (``finite``: the arrays to check, in order; default every array of
+        ``out`` but ``deg``) is not finite, naming the listing's bug where its Cramer determinant
+        vanishes there (``conditioning.raise_at_pole``); then the precision rule
+        (``conditioning.check_precision``: raise at a toggle or a listing's pole to working
+        precision, warn near a listing's pole and where half the digits are gone).  Adds the
+        per-angle ``condition`` and ``error_bound`` (the bound on the relative error of the
+        deflection vector, ``conditioning.expected_error``).  ``rho`` (``pole_distance``) and
+        ``size`` (the deflection's terms, (N, 3), ``structure.magnitude``) of the path point,
+        whose extender is ``extender`` (in)."""
+        finite = {k: v for k, v in out.items() if k != "deg"} if finite is None else finite
+        try:
+            check_finite(self.deg, who, **finite)
+        except SingularPositionError as error:
+            raise_at_pole(who, self.deg, rho, self.determinant_bugs(), self.deg.tolist().index(error.angle_deg))
+            raise
         loops, links = self.loops()
         link_spread = spread(links)
         kappa = condition(self.deg, _pi(self.quirks), loops, link_spread)
-        d = out if deflection is None else deflection
-        cancelled = 1.0 if size is None else cancellation(d["dx"], d["dy"], d["rot"], extender, size)
+        cancelled = 1.0 if size is None else cancellation(out["dx"], out["dy"], out["rot"], extender, size)
         bound = check_precision(self.deg, kappa, self.quirks.real4_storage, who, stacklevel=stacklevel,
                                 rho=rho, bugs=self.determinant_bugs(), cancelled=cancelled,
                                 construction=self.construction())

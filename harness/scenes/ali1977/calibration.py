@@ -3,7 +3,7 @@
 
 A fixed random sample of draws, each a program (Case I, II or III, source or cognate), a
 crank-rocker (crank 1 to 10 in, the other links 1.4 to 20 times it; in one draw in twelve 3 to
-100 in with a crank 1e-3 to 0.3 times them; the coupler point anywhere from 0.05 to 5 coupler
+100 in with a crank 3e-6 to 0.3 times them; the coupler point anywhere from 0.05 to 5 coupler
 lengths out), a section (area 0.003 to 3 in^2, modulus 1e6 to 3e7 psi,
 second moment 0.01 to 30 times a round bar's: slender and stocky), a speed (60 to 1200 rpm), a
 weight or density, and an input-angle grid (step 30 to 90 deg: legacy computes the grid).  One
@@ -30,6 +30,7 @@ from __future__ import annotations
 
 import math
 import warnings
+from pathlib import Path
 
 import numpy as np
 import pandas as pd
@@ -37,11 +38,15 @@ import pandas as pd
 from ....errors import LinkageError, LinkreproWarning
 from ....legacy import ali1977 as legacy
 from ....port.ali1977 import case1, case2, case3
-from ....port.ali1977.conditioning import DOUBLE_UNIT, REAL4_UNIT, spread
+from ....port.ali1977.conditioning import (CONDITION_FACTOR, DOUBLE_UNIT, POLE_FACTOR, REAL4_UNIT, STORAGE_FACTOR,
+                                           spread)
 from ....port.ali1977.fourbar import Lengths, construction_factor
 from ....port.ali1977.quirks import CORRECTED
 from ....port.ali1977.structure import GRAVITY_IN, GRAVITY_REAL4, Section
+from ...csv_output import FULL_PRECISION, write_csv
 from . import exact, poles
+
+from .commands import DRAWS, OUTPUTS, SEED, TITLE
 
 #: the programs, their port functions and their weight's name
 PROGRAMS = {"case1_source": case1.source_case1, "case1_cognate": case1.cognate_case1,
@@ -64,9 +69,9 @@ def draw(rng: np.random.Generator) -> dict:
     kind = rng.choice(["random", "toggle", "pole", "spread"], p=[1 / 2, 1 / 6, 1 / 4, 1 / 12])
     s = 10.0 ** rng.uniform(0.0, 1.0)
     p, q = s * 10.0 ** rng.uniform(0.15, 1.3, 2)
-    if kind == "spread":                                         # a crank 1e-3 to 0.3 of the other links
+    if kind == "spread":                                         # a crank 3e-6 to 0.3 of the other links
         p, q = 10.0 ** rng.uniform(0.5, 2.0, 2)
-        s = min(p, q) * 10.0 ** -rng.uniform(0.5, 3.0)
+        s = min(p, q) * 10.0 ** -rng.uniform(0.5, 5.5)
     spare = 10.0 ** -rng.uniform(3.0, 12.0) if kind == "toggle" else rng.uniform(0.02, 0.98)
     longest = max(p, q) + (1.0 - spare) * (min(p, q) - s)
     l3, l4, l5 = rng.permutation([p, q, longest])
@@ -199,3 +204,35 @@ def summary(data: pd.DataFrame) -> pd.DataFrame:
                      "over_bound": int((answered["error"] > answered["error_bound"]).sum()),
                      "silent_failures": int(((answered["verdict"] == "returned") & (answered["error"] > claim)).sum())})
     return pd.DataFrame(rows)
+
+
+#: the sample's summary as the command last recorded it (``--record``): what the docs show
+RECORD = Path(__file__).with_name("ked_bound.csv")
+
+
+def as_markdown(table: pd.DataFrame, seed: int, draws: int) -> str:
+    """The summary as a markdown table, with what was run."""
+    lines = [f"{draws} draws from seed {seed}, {int(table['runs'].sum())} runs "
+             f"(`linkrepro ked-bound --draws {draws} --seed {seed}`); bound: "
+             f"({STORAGE_FACTOR:g} u_s + {CONDITION_FACTOR:g} u kappa K + {POLE_FACTOR:g} u K / rho) x cancellation.",
+             "", "| engine | runs | points checked | refused | warned | worst error / bound | over the bound | "
+             "silent failures |", "|---|---|---|---|---|---|---|---|"]
+    lines += [f"| {r.engine} | {r.runs} | {r.points} | {r.refused} | {r.warned} | {r.worst_error_over_bound:.2g} | "
+              f"{r.over_bound} | {r.silent_failures} |" for r in table.itertuples()]
+    return "\n".join(lines) + "\n"
+
+
+def write(out_dir: Path, seed: int = SEED, draws: int = DRAWS, record: bool = False) -> str:
+    """Measure the sample and write DIR/calibration.csv (every point), DIR/summary.csv and
+    DIR/calibration.md; with ``record`` also RECORD (the summary, with the seed and draws)."""
+    data = measure(seed, draws)
+    table = summary(data)
+    out_dir = Path(out_dir)
+    out_dir.mkdir(parents=True, exist_ok=True)
+    write_csv(data, out_dir / "calibration.csv", FULL_PRECISION)
+    write_csv(table, out_dir / "summary.csv", "%.6g")
+    text = as_markdown(table, seed, draws)
+    (out_dir / "calibration.md").write_text(f"# {TITLE}\n\n{__doc__.split(chr(10) * 2, 1)[1].strip()}\n\n{text}")
+    if record:
+        write_csv(table.assign(seed=seed, draws=draws), RECORD, "%.6g")
+    return text

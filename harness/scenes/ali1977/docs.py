@@ -27,4 +27,42 @@ def structure_dynamics() -> str:
     return "\n".join(lines) + "\n"
 
 
-BLOCKS = {"structure dynamics": structure_dynamics}
+def ked_bound() -> str:
+    """The K.E.D. error bound's calibration sample as ``linkrepro ked-bound --record`` last wrote
+    it (``calibration.RECORD``): per engine, runs, points checked against 60 digits, refused,
+    warned, the worst error over its bound, the points over it and the silent failures."""
+    import pandas as pd
+    from .calibration import RECORD
+    table = pd.read_csv(RECORD)
+    seed, draws = int(table["seed"].iloc[0]), int(table["draws"].iloc[0])
+    lines = [f"`linkrepro ked-bound --draws {draws} --seed {seed}`: {int(table['runs'].sum())} runs.", "",
+             "| engine | runs | points checked | refused | warned | worst error / bound | over the bound | "
+             "silent failures |", "|---|---|---|---|---|---|---|---|"]
+    lines += [f"| {r.engine} | {r.runs} | {r.points} | {r.refused} | {r.warned} | {r.worst_error_over_bound:.2g} | "
+              f"{r.over_bound} | {r.silent_failures} |" for r in table.itertuples()]
+    return "\n".join(lines) + "\n"
+
+
+def ked_example() -> str:
+    """The published example's rows (legacy, each program at its printed inputs): the largest
+    bound on the deflection's relative error the engine states, at which angle, against the
+    warning level, and what the engine said."""
+    import math
+    import warnings
+
+    from ....errors import LinkreproWarning
+    from ....legacy import ali1977
+    from ....port.ali1977.conditioning import REAL4_UNIT
+    lines = ["| program | largest error bound (at deg) | warning level | warnings |", "|---|---|---|---|"]
+    for name in ("case1_source", "case1_cognate", "case2_source", "case2_cognate", "case3_source", "case3_cognate"):
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always", LinkreproWarning)
+            out = getattr(ali1977, name)()
+        i = int(np.argmax(out["error_bound"]))
+        said = sorted({w.category.__name__ for w in caught if issubclass(w.category, LinkreproWarning)})
+        lines.append(f"| {name} | {out['error_bound'][i]:.2g} ({out['deg'][i]:g}) | {math.sqrt(REAL4_UNIT):.2g} | "
+                     f"{', '.join(said) or 'none'} |")
+    return "\n".join(lines) + "\n"
+
+
+BLOCKS = {"structure dynamics": structure_dynamics, "ked bound": ked_bound, "ked example": ked_example}

@@ -286,8 +286,11 @@ def listing(program: str, deg: float, lengths: Lengths, alp: float | None, rpm: 
     engines' rounding error.  ``weight`` the path point's weight (Case I, lbf) or the density
     (Cases II, III, lbf/in^3); ``n`` Case III's nodes.  Returns dx, dy (in, the source frame unless
     D025 is on), rot (rad), ``extender`` (the program's extender length, in: l2, or the cognate's
-    CL2) and ``rho``: for each Cramer matrix the program solves, |det| over the sum of its six
-    terms' magnitudes.  ArithmeticError where the loop cannot close."""
+    CL2), ``xp, yp`` (in: the path point in the program's own frame, the source's coupler point
+    for a source program), ``rho``: for each Cramer matrix the program solves, |det| over the sum
+    of its six terms' magnitudes, and ``magnitude``: the length of the deflection vector's terms
+    before they cancel (the same products of the entries' magnitudes, in).  ArithmeticError where
+    the loop cannot close."""
     case, cognate = int(program[4]), program.endswith("cognate")
     pi, alp, rpm, weight, section, gravity, _ = _engine_inputs(program, alp, rpm, weight, section, quirks)
     with mpmath.workdps(digits):
@@ -299,11 +302,12 @@ def listing(program: str, deg: float, lengths: Lengths, alp: float | None, rpm: 
         motion = _Motion(mp, mp.mpf(deg), links, alp_, om2, pi_, quirks, cognate)
         a1, a2, a3, a4, _ = motion.links
         sign = 1 if quirks.inertia_sign else -1                                               # D018
-        solved = []
+        solved, points = [], []
 
         def at(r):
             position, acc, beta, cramer = motion.point(r)
             solved.append(cramer)
+            points.append(position)
             return position, acc, beta
 
         def load(acc, w):
@@ -327,6 +331,7 @@ def listing(program: str, deg: float, lengths: Lengths, alp: float | None, rpm: 
                          magnitude[2]]
         rho = [float(abs(_det(m)) / _det(m, absolute=True)) for m in solved]
         return {"dx": float(delta[0]), "dy": float(delta[1]), "rot": float(delta[2]), "extender": float(a2),
+                "xp": float(points[0][0]), "yp": float(points[0][1]),
                 "rho": rho, "magnitude": float(mpmath.sqrt(magnitude[0] ** 2 + magnitude[1] ** 2
                                                            + (a2 * magnitude[2]) ** 2))}
 
