@@ -173,7 +173,9 @@ class Linkage:
         per-angle ``condition`` and ``error_bound`` (the bound on the relative error of the
         deflection vector, ``conditioning.expected_error``).  ``rho`` (``pole_distance``) and
         ``size`` (the deflection's terms, (N, 3), ``structure.magnitude``) of the path point,
-        whose extender is ``extender`` (in)."""
+        whose extender is ``extender`` (in).  The links' construction (``construction``) and,
+        beyond a turn, the input angle's own rounding (|deg| / 360 turns) scale the positions'
+        terms of the bound."""
         finite = {k: v for k, v in out.items() if k != "deg"} if finite is None else finite
         try:
             check_finite(self.deg, who, **finite)
@@ -186,7 +188,7 @@ class Linkage:
         cancelled = 1.0 if size is None else cancellation(out["dx"], out["dy"], out["rot"], extender, size)
         bound = check_precision(self.deg, kappa, self.quirks.real4_storage, who, stacklevel=stacklevel,
                                 rho=rho, bugs=self.determinant_bugs(), cancelled=cancelled,
-                                construction=self.construction())
+                                construction=self.construction() * np.maximum(1.0, np.abs(self.deg) / 360.0))
         out["condition"], out["error_bound"] = kappa, bound
         return out
 

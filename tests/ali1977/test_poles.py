@@ -145,15 +145,19 @@ def test_a_deflection_whose_terms_cancel_warns_and_keeps_its_bound():
 
 
 def test_at_the_listings_beta_edge_rounding_decides_and_d141_warns():
-    """l2 cos(alp) = l3 to rounding: the listing's CBTA is within its rounding of 0 and its BETA
-    may take either quadrant; D141 warns (it did not, for l2 cos(alp) a hair under l3)."""
-    l2, l3 = 40.0, 30.0
-    alp = math.acos(l3 / l2)
-    alp = max((alp, float(np.nextafter(alp, 1.0)), float(np.nextafter(alp, 0.0))),
-              key=lambda a: l3 - l2 * math.cos(a) if l3 - l2 * math.cos(a) > 0 else -1.0)
-    assert l2 * math.cos(alp) < l3
+    """l2, l3 = 40, 30 in, alp one ulp below acos(3/4): l2 cos(alp) = l3 in double, and the
+    listing's CBTA is within its rounding of 0, so rounding picks BETA's quadrant (D165): legacy's
+    deflection at 90 deg is 40 times its length off the listing's equations in 60 digits.  D141
+    warns there now (it did not: l2 cos(alp) > l3 is false in double)."""
+    lengths = Lengths(10.0, 40.0, 30.0, 25.0, 30.0)
+    alp = float(np.nextafter(math.acos(0.75), 0.0))
+    assert lengths.l2 * math.cos(alp) == lengths.l3
     with pytest.warns(ListingBugWarning, match="D141"):
-        ali1977.case1_cognate(10.0, l2, l3, 25.0, 30.0, alp=alp, rpm=300.0)
+        out = ali1977.case1_cognate(*vars(lengths).values(), alp=alp, rpm=300.0, step_deg=90.0)
+    ref = exact.listing("case1_cognate", 90.0, lengths, alp, 300.0, 2.0, SECTION, poles.LISTINGS["case1_cognate"][0])
+    truth = np.array([ref["dx"], ref["dy"], ref["extender"] * ref["rot"]])
+    got = np.array([out["dx"][1], out["dy"][1], ref["extender"] * out["rot"][1]])
+    assert np.linalg.norm(got - truth) > np.linalg.norm(truth)
 
 
 def test_the_bound_holds_on_a_fresh_calibration_sample():
