@@ -18,13 +18,19 @@ lengths from 1e-6 to 1e6 in, section values and step positive and finite, |alp| 
 (the weight, the step) or assign from REAL*4 literals (section values, density)
 representable there: finite, and positive where it must be), ``AssemblyError`` when the four-bar (or its cognate) cannot
 close at some input angle, ``SingularPositionError`` when a position gives a non-finite
-result or lies at a toggle to working precision (both with the input angle; the port raises
-the same, see ``linkrepro.port``).  Every program returns ``condition`` per input angle and
-warns (``linkrepro.PrecisionWarning``) where fewer than half its REAL*4 digits are left
-(``linkrepro.port.ali1977.conditioning``).
+result, or lies at a toggle or at a zero of the listing's own Cramer determinant (its bugs
+D014, D015, D026, named) to working precision (with the input angle; the port raises the
+same, see ``linkrepro.port``).  Every program returns ``condition`` and ``error_bound`` (the
+bound on the relative error of the deflection vector dx, dy, extender * rot against the
+listing's equations, Case III's at its path point) per input angle, warns
+``linkrepro.ListingBugWarning`` (naming the bugs and the angle) near a zero of the listing's
+determinant and ``linkrepro.PrecisionWarning`` where fewer than half its REAL*4 digits are left
+(``linkrepro.port.ali1977.conditioning``, the listing's algebra taken from the port, which
+computes it bit for bit).
 The cognate programs warn (``linkrepro.ListingBugWarning``, register D141) where the
 listing's BETA turns the cognate into the wrong place: ``alp`` below 0 or above 180 deg, or
-a coupler triangle obtuse at the follower pin (l2 cos(alp) > l3).
+a coupler triangle obtuse at the follower pin (l2 cos(alp) > l3, or within the rounding of
+the listing's CBTA of it, D165).
 
 Threads: every call into the compiled FORTRAN (static storage) holds ``FORTRAN_LOCK``;
 calls from several threads are serialized and each returns what it would alone.

@@ -27,7 +27,12 @@ they are rounded to single precision first (ValueError if that gives 0 or infini
 A linkage that cannot close raises AssemblyError at the first input angle where the
 listing's test fails (source and cognate loops tested angle by angle); a result that is not
 finite raises SingularPositionError at the first angle where the first non-finite quantity
-(in the order the results are returned) is not finite: both as the legacy face does.
+(in the order the results are returned) is not finite: both as the legacy face does.  Every
+program ends with ``Linkage.finish``: it adds ``condition`` and ``error_bound`` per input angle
+(``conditioning``: the bound on the relative error of the deflection vector) and warns or
+raises near a toggle, near a zero of the listing's own Cramer determinant (with the listing's
+bugs) or where a deflection's terms cancel; ``run_*`` is a program before that check (the
+legacy face checks its own results with it).
 
 With ``quirks=PRINTED`` the formulas, the order of operations and the REAL*4
 storage are the listings', and the results equal the legacy build's.  Each

@@ -46,7 +46,10 @@ from ....port.ali1977.structure import GRAVITY_IN, GRAVITY_REAL4, Section
 from ...csv_output import FULL_PRECISION, write_csv
 from . import exact, poles
 
-from .commands import DRAWS, OUTPUTS, SEED, TITLE
+TITLE = "Ali (1977): the K.E.D. engines' error bound on random geometries and sections, Cases I-III"
+#: the sample's defaults (``linkrepro ked-bound``): 1250 draws of four runs each
+SEED, DRAWS = 0, 1250
+OUTPUTS = ("calibration.csv", "summary.csv", "calibration.md")
 
 #: the programs, their port functions and their weight's name
 PROGRAMS = {"case1_source": case1.source_case1, "case1_cognate": case1.cognate_case1,
