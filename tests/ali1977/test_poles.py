@@ -29,7 +29,8 @@ from linkrepro.port.ali1977.structure import Section
 
 SECTION = Section(ali1977.CA_PRINTED, ali1977.ME_PRINTED, ali1977.MI_PRINTED)
 PORT = {"case1_source": case1.source_case1, "case1_cognate": case1.cognate_case1,
-        "case2_source": case2.case2_source, "case3_source": case3.case3_source}
+        "case2_source": case2.case2_source, "case2_cognate": case2.case2_cognate,
+        "case3_source": case3.case3_source, "case3_cognate": case3.case3_cognate}
 #: (program, lengths, the grid angle the pole is put at, the bugs it names), none the reproducer's
 POLES = [("case1_source", (10.0, 12.0, 30.0, 25.0, 30.0), 100.0, "D014, D015"),
          ("case2_source", (8.0, 20.0, 26.0, 30.0, 28.0), 300.0, "D014, D015"),
@@ -166,3 +167,27 @@ def test_the_bound_holds_on_a_fresh_calibration_sample():
     table = calibration.summary(calibration.measure(seed=7, draws=25)).set_index("engine")
     assert (table["over_bound"] == 0).all() and (table["silent_failures"] == 0).all(), table
     assert table["points"].min() > 50
+
+
+@pytest.mark.parametrize("program", list(poles.LISTINGS))
+def test_the_60_digit_listing_is_the_double_port_at_ordinary_positions(program):
+    """exact.listing, written from the listings' statements, against the port in double precision
+    (the listing's quirks and the corrected ones) at three ordinary angles: the same equations,
+    so they agree to the double's rounding; and the corrected Case I against the independent
+    construction from the geometry (``exact.case1_source``)."""
+    lengths, section = Lengths(10.0, 12.0, 30.0, 25.0, 30.0), Section(0.2, 1e7, 0.003)
+    deg = np.array([17.0, 133.0, 250.0])
+    weight = 2.0 if program.startswith("case1") else 0.098
+    for quirks in (poles.LISTINGS[program][0].only("real4_storage", False), CORRECTED):
+        out = PORT[program](deg, lengths=lengths, alp=1.0, rpm=300.0, section=section, quirks=quirks,
+                                **{"mass_lbf" if program.startswith("case1") else "density": weight})
+        for k, d in enumerate(deg):
+            ref = exact.listing(program, float(d), lengths, 1.0, 300.0, weight, section, quirks)
+            truth = np.array([ref["dx"], ref["dy"], ref["extender"] * ref["rot"]])
+            got = np.array([out["dx"][k], out["dy"][k], ref["extender"] * out["rot"][k]])
+            assert np.linalg.norm(got - truth) <= 1e-13 * np.linalg.norm(truth), (quirks, d)
+    if program == "case1_source":
+        for d in deg:
+            geometric = exact.case1_source(float(d), lengths, alp_deg=math.degrees(1.0), section=section)
+            ref = exact.listing(program, float(d), lengths, 1.0, 300.0, 2.0, section, CORRECTED)
+            assert abs(geometric["dx"] - ref["dx"]) + abs(geometric["dy"] - ref["dy"]) < 1e-12 * abs(ref["dx"])

@@ -1,6 +1,15 @@
-"""Case I of the K.E.D. method, source four-bar, in 60-digit arithmetic (mpmath): the reference
-against which the engines' rounding error is measured near a toggle (scene
-``ali1977-conditioning``) and the corrected port is checked (tests/ali1977/test_conditioning.py).
+"""The K.E.D. method in 60-digit arithmetic (mpmath): the references against which the engines'
+rounding error is measured.
+
+``listing``: any program (Cases I-III, source and cognate) under any quirks, the port's formulas
+(the listing's, or the thesis's with a quirk off) evaluated in ``digits`` digits from the inputs
+the port takes (the listing's pi, speed and REAL*4 literals): the reference of the error bound's
+calibration (``calibration``, ``linkrepro ked-bound``), of the listing poles
+(tests/ali1977/test_poles.py, the fuzz) and of the scene's checks.
+
+``case1_source``: Case I of the source four-bar, corrected, in 60 digits: the reference against
+which the engines' rounding error is measured near a toggle (scene ``ali1977-conditioning``)
+and the corrected port is checked (tests/ali1977/test_conditioning.py).
 
 The thesis's corrected equations (every quirk off), written from the geometry rather than from
 the listing: the follower pin B where the coupler's and the follower's circles meet (in the
