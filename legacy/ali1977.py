@@ -18,13 +18,19 @@ lengths from 1e-6 to 1e6 in, section values and step positive and finite, |alp| 
 (the weight, the step) or assign from REAL*4 literals (section values, density)
 representable there: finite, and positive where it must be), ``AssemblyError`` when the four-bar (or its cognate) cannot
 close at some input angle, ``SingularPositionError`` when a position gives a non-finite
-result or lies at a toggle to working precision (both with the input angle; the port raises
-the same, see ``linkrepro.port``).  Every program returns ``condition`` per input angle and
-warns (``linkrepro.PrecisionWarning``) where fewer than half its REAL*4 digits are left
-(``linkrepro.port.ali1977.conditioning``).
+result, or lies at a toggle or at a zero of the listing's own Cramer determinant (its bugs
+D014, D015, D026, named) to working precision (with the input angle; the port raises the
+same, see ``linkrepro.port``).  Every program returns ``condition`` and ``error_bound`` (the
+bound on the relative error of the deflection vector dx, dy, extender * rot against the
+listing's equations, Case III's at its path point) per input angle, warns
+``linkrepro.ListingBugWarning`` (naming the bugs and the angle) near a zero of the listing's
+determinant and ``linkrepro.PrecisionWarning`` where fewer than half its REAL*4 digits are left
+(``linkrepro.port.ali1977.conditioning``, the listing's algebra taken from the port, which
+computes it bit for bit).
 The cognate programs warn (``linkrepro.ListingBugWarning``, register D141) where the
 listing's BETA turns the cognate into the wrong place: ``alp`` below 0 or above 180 deg, or
-a coupler triangle obtuse at the follower pin (l2 cos(alp) > l3).
+a coupler triangle obtuse at the follower pin (l2 cos(alp) > l3, or within the rounding of
+the listing's CBTA of it, D165).
 
 Threads: every call into the compiled FORTRAN (static storage) holds ``FORTRAN_LOCK``;
 calls from several threads are serialized and each returns what it would alone.
@@ -37,9 +43,11 @@ import threading
 import numpy as np
 
 from ..checks import INTEGER_MAX, as_real4, integer, link_length, parameter, real4_array, speed_rpm, weight_lbf
-from ..errors import AssemblyError, SingularPositionError
-from ..port.ali1977.conditioning import check_precision, condition, spread
-from ..port.ali1977.fourbar import Cognate, Lengths, warn_listing_beta
+from ..errors import AssemblyError
+from ..port.ali1977 import case1, case2, case3
+from ..port.ali1977.fourbar import Lengths, warn_listing_beta
+from ..port.ali1977.quirks import PRINTED
+from ..port.ali1977.structure import Section
 from . import _ali1977 as _f
 
 #: held around every call into the compiled Ali (1977) FORTRAN (static storage)
@@ -83,32 +91,22 @@ def _check_inputs(lengths, alp, rpm, mass_lbf, area, modulus, inertia, step_deg)
     return angle_grid(step_deg)
 
 
-def _raise_on_status(istat: int, deg: np.ndarray, arrays: dict, program: str) -> None:
+def _raise_on_status(istat: int, deg: np.ndarray, program: str) -> None:
     if istat:
         raise AssemblyError(f"{program}: the four-bar cannot close (negative discriminant "
                             "in the closed-form position equations)", float(deg[istat - 1]))
-    for name, values in arrays.items():
-        bad = ~np.isfinite(values)
-        if bad.any():
-            i = int(np.argmax(bad.reshape(len(deg), -1).any(axis=1)))   # the angle, for (N, ...) too
-            raise SingularPositionError(f"{program}: non-finite {name}", float(deg[i]))
 
 
-def _finish(out: dict, lengths: tuple, alp: float, cognate: bool, program: str) -> dict:
-    """The port's precision rule on a listing's results (``port.ali1977.conditioning``): a
-    SingularPositionError at a toggle to working precision, a PrecisionWarning where fewer than
-    half the REAL*4 digits are left; ``condition`` added, per input angle."""
-    l1, l2, l3, l4, l5 = lengths
-    loops, links = [(l1, l3, l4, l5)], list(lengths)
-    if cognate:
-        cog = Cognate.of(Lengths(*lengths), alp, PI_PRINTED)
-        loops.append((cog.cl1, cog.cl3, cog.cl4, cog.cl5))
-        links += [cog.cl1, cog.cl2, cog.cl3, cog.cl4, cog.cl5]
-    link_spread = spread(links)
-    kappa = condition(out["deg"], PI_PRINTED, loops, link_spread)
-    check_precision(out["deg"], kappa, link_spread, True, program)
-    out["condition"] = kappa
-    return out
+def _finish(out: dict, run, program: str, finite: dict | None = None) -> dict:
+    """The port's checks on a listing's results (``Linkage.finish``), the listing's own algebra
+    taken from the port with the listing's bugs (``run``: its ``run_*``, which computes what the
+    FORTRAN does, bit for bit): a SingularPositionError at the first input angle where a result
+    (``finite``, default every array of ``out`` but ``deg``) is not finite, or at a toggle or a
+    zero of the listing's Cramer determinant to working precision (naming the bug), a
+    ListingBugWarning near such a zero, a PrecisionWarning where fewer than half the REAL*4
+    digits are left; ``condition`` and ``error_bound`` added, per input angle."""
+    _, finish = run(out["deg"])
+    return finish(out, program, stacklevel=5, finite=finite)
 
 
 def case1_source(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_SOURCE_PRINTED,
@@ -126,8 +124,9 @@ def case1_source(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_SOURCE_PRI
         deg, xp, yp, dx, dy, rot, istat = _f.ked1s(l1, l2, l3, l4, l5, alp, rpm, mass_lbf,
                                                    area, modulus, inertia, step_deg, n)
     out = {"deg": deg, "xp": xp, "yp": yp, "dx": dx, "dy": dy, "rot": rot}
-    _raise_on_status(istat, deg, {k: v for k, v in out.items() if k != "deg"}, "KED1S")
-    return _finish(out, (l1, l2, l3, l4, l5), alp, False, "KED1S")
+    _raise_on_status(istat, deg, "KED1S")
+    return _finish(out, lambda d: case1.run_source_case1(d, Lengths(l1, l2, l3, l4, l5), alp, rpm, mass_lbf,
+                                                         Section(area, modulus, inertia), PRINTED), "KED1S")
 
 
 def case1_cognate(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_PRINTED,
@@ -147,8 +146,10 @@ def case1_cognate(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_P
         deg, xp, yp, cxp, cyp, dx, dy, rot, istat = _f.ked1c(
             l1, l2, l3, l4, l5, alp, rpm, mass_lbf, area, modulus, inertia, step_deg, n)
     out = {"deg": deg, "xp": xp, "yp": yp, "cxp": cxp, "cyp": cyp, "dx": dx, "dy": dy, "rot": rot}
-    _raise_on_status(istat, deg, {k: v for k, v in out.items() if k != "deg"}, "KED1C")
-    return _finish(out, (l1, l2, l3, l4, l5), alp, True, "KED1C")
+    _raise_on_status(istat, deg, "KED1C")
+    return _finish(out, lambda d: case1.run_cognate_case1(d, Lengths(l1, l2, l3, l4, l5), alp, rpm, mass_lbf,
+                                                          Section(area, modulus, inertia), PRINTED, warn_beta=False),
+                   "KED1C")
 
 
 def case2_source(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_PRINTED,
@@ -164,8 +165,9 @@ def case2_source(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_PR
         deg, xp, yp, dx, dy, rot, istat = _f.ked2s(l1, l2, l3, l4, l5, alp, rpm, density, area,
                                                    modulus, inertia, step_deg, n)
     out = {"deg": deg, "xp": xp, "yp": yp, "dx": dx, "dy": dy, "rot": rot}
-    _raise_on_status(istat, deg, {k: v for k, v in out.items() if k != "deg"}, "KED2S")
-    return _finish(out, (l1, l2, l3, l4, l5), alp, False, "KED2S")
+    _raise_on_status(istat, deg, "KED2S")
+    return _finish(out, lambda d: case2.run_case2_source(d, Lengths(l1, l2, l3, l4, l5), alp, rpm, density,
+                                                         Section(area, modulus, inertia), case2.LISTING), "KED2S")
 
 
 def case2_cognate(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_PRINTED,
@@ -183,8 +185,10 @@ def case2_cognate(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_P
         deg, xp, yp, cxp, cyp, dx, dy, rot, istat = _f.ked2c(l1, l2, l3, l4, l5, alp, rpm, density, area,
                                                              modulus, inertia, step_deg, n)
     out = {"deg": deg, "xp": xp, "yp": yp, "cxp": cxp, "cyp": cyp, "dx": dx, "dy": dy, "rot": rot}
-    _raise_on_status(istat, deg, {k: v for k, v in out.items() if k != "deg"}, "KED2C")
-    return _finish(out, (l1, l2, l3, l4, l5), alp, True, "KED2C")
+    _raise_on_status(istat, deg, "KED2C")
+    return _finish(out, lambda d: case2.run_case2_cognate(d, Lengths(l1, l2, l3, l4, l5), alp, rpm, density,
+                                                          Section(area, modulus, inertia), case2.COGNATE_LISTING,
+                                                          warn_beta=False), "KED2C")
 
 
 def case3_source(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_PRINTED,
@@ -205,8 +209,10 @@ def case3_source(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_PR
     nodes = np.ascontiguousarray(deflections.T.reshape(n, 5, 3))
     out = {"deg": deg, "xp": xp, "yp": yp, "dx": nodes[:, 0, 0], "dy": nodes[:, 0, 1],
            "rot": nodes[:, 0, 2], "nodes": nodes}
-    _raise_on_status(istat, deg, {"xp": xp, "yp": yp, "nodes": nodes}, "KED3S")
-    return _finish(out, (l1, l2, l3, l4, l5), alp, False, "KED3S")
+    _raise_on_status(istat, deg, "KED3S")
+    return _finish(out, lambda d: case3.run_case3_source(d, 5, Lengths(l1, l2, l3, l4, l5), alp, rpm, density,
+                                                         Section(area, modulus, inertia), case3.LISTING), "KED3S",
+                   finite={"xp": xp, "yp": yp, "nodes": nodes})
 
 
 def case3_cognate(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_PRINTED,
@@ -221,8 +227,10 @@ def case3_cognate(l1=10.0, l2=10.0, l3=30.0, l4=25.0, l5=30.0, alp=ALP_COGNATE_P
         deg, xp, yp, cxp, cyp, dx, dy, rot, istat = _f.ked3c(l1, l2, l3, l4, l5, alp, rpm, density, area,
                                                              modulus, inertia, step_deg, n)
     out = {"deg": deg, "xp": xp, "yp": yp, "cxp": cxp, "cyp": cyp, "dx": dx, "dy": dy, "rot": rot}
-    _raise_on_status(istat, deg, {k: v for k, v in out.items() if k != "deg"}, "KED3C")
-    return _finish(out, (l1, l2, l3, l4, l5), alp, True, "KED3C")
+    _raise_on_status(istat, deg, "KED3C")
+    return _finish(out, lambda d: case3.run_case3_cognate(d, 5, Lengths(l1, l2, l3, l4, l5), alp, rpm, density,
+                                                          Section(area, modulus, inertia), case3.COGNATE_LISTING,
+                                                          warn_beta=False), "KED3C")
 
 
 def gmtra(a: np.ndarray) -> np.ndarray:

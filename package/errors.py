@@ -43,10 +43,13 @@ class LinkreproWarning(UserWarning):
 class ListingBugWarning(LinkreproWarning):
     """The inputs fall where a known bug of the original listing changes the result: the
     engine keeps the listing's behaviour (it is what the author ran) and says so.
-    ``entry`` is the deviation register's id (``harness/deviations.toml``)."""
+    ``entry`` is the deviation register's id (``harness/deviations.toml``; ids joined by ", "
+    where several bugs act together); ``angle_deg`` the first input angle concerned and
+    ``relative_error`` the expected error there, where the warning is about one position."""
 
-    def __init__(self, message: str, entry: str):
-        self.entry = entry
+    def __init__(self, message: str, entry: str, angle_deg: float | None = None,
+                 relative_error: float | None = None):
+        self.entry, self.angle_deg, self.relative_error = entry, angle_deg, relative_error
         super().__init__(f"{message} (the listing's bug {entry}, see the deviation register; "
                          "quirks=CORRECTED computes what the thesis meant)")
 

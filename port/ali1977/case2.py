@@ -14,6 +14,7 @@ Units: inch, pound-force, second; degrees for ``deg``.  Arguments and errors as 
 """
 from __future__ import annotations
 
+import functools
 from types import SimpleNamespace
 
 import numpy as np
@@ -21,11 +22,11 @@ from numba import njit
 
 from ...checks import angles_deg, as_real4, weight_lbf
 from .. import libm
-from .fourbar import Lengths, check_finite
+from .fourbar import Lengths
 from .cognate import _cognate_linkage
 from .data import EXAMPLE, _pi, expect
 from .source import _source_linkage
-from .structure import GRAVITY_IN, GRAVITY_REAL4, Section, deflection, flexibility
+from .structure import GRAVITY_IN, GRAVITY_REAL4, Section, deflection, flexibility, magnitude
 from .quirks import PRINTED, Quirks
 from ..real4 import store
 
@@ -119,7 +120,14 @@ def case2_source(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = No
                  rpm: float = EXAMPLE.rpm, density: float = DENSITY,
                  section: Section = EXAMPLE.section, quirks: Quirks = LISTING) -> dict:
     """Case II, source four-bar: ``xp, yp`` (in), ``dx, dy`` (in) and ``rot`` (rad)."""
-    deg = angles_deg("deg", deg)
+    out, finish = run_case2_source(angles_deg("deg", deg), lengths, alp, rpm, density, section, quirks)
+    return finish(out, "case II source")
+
+
+def run_case2_source(deg: np.ndarray, lengths: Lengths, alp: float | None, rpm: float, density: float,
+                     section: Section, quirks: Quirks):
+    """case2_source of checked angles ``deg``, before its precision check (as
+    ``case1.run_source_case1``)."""
     density = weight_lbf("density", density)
     expect("section", section, Section)
     expect("quirks", quirks, Quirks)
@@ -131,11 +139,13 @@ def case2_source(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = No
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         loads = store(joint_loads(mech, lengths, dens, sec.area, quirks), real4)
         flex = flexibility(lengths.l2, lengths.l1, lengths.l3, lengths.l4, sec, quirks)
-        delta = deflection(mech.beta, flex, loads, quirks, right=beta2(mech, quirks))
+        right = beta2(mech, quirks)
+        delta = deflection(mech.beta, flex, loads, quirks, right=right)
     out = {"xp": mech.xp, "yp": mech.yp, "dx": delta[:, 0].astype(np.float64),
            "dy": delta[:, 1].astype(np.float64), "rot": delta[:, 2].astype(np.float64)}
-    check_finite(deg, "case II source", **out)
-    return mech.extra["linkage"].finish(out, "case II source")
+    link = mech.extra["linkage"]
+    return out, functools.partial(link.finish, rho=link.pole_distance(mech),
+                                  size=magnitude(mech.beta, flex, loads, right), extender=lengths.l2)
 
 
 def case2_cognate(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = None,
@@ -148,12 +158,19 @@ def case2_cognate(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = N
     coordinates (joint_loads), or with the reconstruction's signs where
     ``quirks.cognate_joint_load_signs`` (D145).  Returns ``xp, yp`` (source), ``cxp, cyp``,
     ``dx, dy`` (in) and ``rot`` (rad)."""
-    deg = angles_deg("deg", deg)
+    out, finish = run_case2_cognate(angles_deg("deg", deg), lengths, alp, rpm, density, section, quirks)
+    return finish(out, "case II cognate")
+
+
+def run_case2_cognate(deg: np.ndarray, lengths: Lengths, alp: float | None, rpm: float, density: float,
+                      section: Section, quirks: Quirks, warn_beta: bool = True):
+    """case2_cognate of checked angles ``deg``, before its precision check (as
+    ``case1.run_cognate_case1``)."""
     density = weight_lbf("density", density)
     expect("section", section, Section)
     expect("quirks", quirks, Quirks)
     real4 = quirks.real4_storage
-    mech = _cognate_linkage(deg, lengths, alp, rpm, quirks).path_point()
+    mech = _cognate_linkage(deg, lengths, alp, rpm, quirks, warn_beta).path_point()
     cog, e = mech.extra["cognate"], mech.extra
     sec = section.as_listing_holds(real4)
     dens = as_real4("density", density) if real4 else density
@@ -162,15 +179,17 @@ def case2_cognate(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = N
         cog_lengths = SimpleNamespace(l1=cog.cl1, l2=cog.cl2, l3=cog.cl3, l4=cog.cl4, l5=cog.cl5)
         loads = store(joint_loads(mech, cog_lengths, dens, sec.area, quirks, cognate=True), real4)
         flex = flexibility(cog.cl2, cog.cl1, cog.cl3, cog.cl4, sec, quirks)
-        delta = deflection(mech.beta, flex, loads, quirks, right=beta2(mech, quirks, cognate=True))
+        right = beta2(mech, quirks, cognate=True)
+        delta = deflection(mech.beta, flex, loads, quirks, right=right)
+        size = magnitude(mech.beta, flex, loads, right)
     dx, dy = delta[:, 0].astype(np.float64), delta[:, 1].astype(np.float64)
     if not quirks.cognate_frame:                                                     # D025
         c, s = libm.cos(mech.frame_angle), libm.sin(mech.frame_angle)
         dx, dy = dx * c - dy * s, dx * s + dy * c
     out = {"xp": e["xp"], "yp": e["yp"], "cxp": e["cxp"], "cyp": e["cyp"], "dx": dx, "dy": dy,
            "rot": delta[:, 2].astype(np.float64)}
-    check_finite(deg, "case II cognate", **out)
-    return mech.extra["linkage"].finish(out, "case II cognate")
+    link = mech.extra["linkage"]
+    return out, functools.partial(link.finish, rho=link.pole_distance(mech), size=size, extender=cog.cl2)
 
 
 __all__ = ["LISTING", "COGNATE_LISTING", "DENSITY", "COGNATE_CRANK", "RECONSTRUCTION_CRANK", "RECONSTRUCTION_COUPLER",

@@ -20,18 +20,19 @@ a block of nodes at a time.
 """
 from __future__ import annotations
 
+import functools
 from types import SimpleNamespace
 
 import numpy as np
 
 from ...checks import angles_deg, as_real4, parameter, weight_lbf
 from .. import libm
-from .fourbar import Lengths, check_finite
+from .fourbar import Lengths
 from .cognate import _cognate_linkage
 from .data import EXAMPLE, _pi, expect
 from .linkage import cramer_determinant
 from .source import SourceLinkage, _source_linkage
-from .structure import GRAVITY_IN, GRAVITY_REAL4, Section, deflection, flexibility
+from .structure import GRAVITY_IN, GRAVITY_REAL4, Section, deflection, flexibility, magnitude
 from .quirks import PRINTED, Quirks
 from ..real4 import store
 
@@ -108,7 +109,9 @@ def _node_blocks(linkage, positions):
 
 
 def _coupled_tip(mechs, loads, positions, lengths: Lengths, section: Section, quirks: Quirks):
-    """Tip deflection (N, 3) of the extender as n segments in series, all nodes loaded.
+    """Tip deflection (N, 3) of the extender as n segments in series, all nodes loaded; the same
+    sums of the terms' magnitudes (N, 3: the deflection's size before cancellation,
+    ``conditioning.cancellation``); and the nodes' ``Linkage.pole_distance`` (N,), or None.
 
     ``positions`` (n,) are the nodes' distances from the crank pin, tip first (node_positions),
     ``loads`` (n, N, 3) their loads, ``mechs`` their Mechanics in the same order: an iterable,
@@ -119,24 +122,37 @@ def _coupled_tip(mechs, loads, positions, lengths: Lengths, section: Section, qu
     shear's moment about node j; the crank, follower and coupler carry the sum of each
     node's Case I reaction (rows f4..f8 of that node's beta).
     """
-    ca, me, mi = section.area, section.modulus, section.inertia
-    reactions, tip, k = 0.0, None, 0
+    reactions, sizes, tip, k, poles = 0.0, 0.0, None, 0, []
     for mech in mechs:
         beta = mech.beta.reshape((-1,) + mech.beta.shape[-3:])           # (nodes, N, 8, 3)
         tip = (mech.extra["ext_angle"], beta[0]) if tip is None else tip
         reactions = reactions + np.einsum("knij,knj->ni", beta[..., 3:8, :2], loads[k:k + len(beta), :, :2])
+        sizes = sizes + np.einsum("knij,knj->ni", np.abs(beta[..., 3:8, :2]), np.abs(loads[k:k + len(beta), :, :2]))
+        rho = mech.extra["linkage"].pole_distance(mech)
+        poles += [] if rho is None else [rho]
         k += len(beta)
     t, tip_beta = tip
     c, s = libm.cos(t), libm.sin(t)
+    delta = _tip_work(c, s, -1.0, loads, tip_beta, reactions, positions, lengths, section, quirks)
+    size = _tip_work(np.abs(c), np.abs(s), 1.0, np.abs(loads), np.abs(tip_beta), sizes, positions, lengths, section,
+                     quirks)
+    return delta, size, (np.minimum.reduce(poles) if poles else None)
+
+
+def _tip_work(c, s, sign, loads, tip_beta, reactions, positions, lengths: Lengths, section: Section, quirks: Quirks):
+    """_coupled_tip's virtual work, from the extender's direction (c, s: its cos and sin), the
+    nodes' loads, the tip's beta and the links' reactions; ``sign`` -1.0 (with the magnitudes
+    of every input and +1.0: the sum of the terms' magnitudes)."""
+    ca, me, mi = section.area, section.modulus, section.inertia
     ascending = np.argsort(positions)
     r = positions[ascending]                                  # node radii, pin outward
     h = np.diff(np.concatenate([[0.0], r]))                   # segment lengths
     loads = loads[ascending]                                  # (n, N, 3)
     axial = loads[..., 0] * c + loads[..., 1] * s             # (n, N)
-    shear = -loads[..., 0] * s + loads[..., 1] * c
+    shear = sign * loads[..., 0] * s + loads[..., 1] * c
     outward = lambda v: np.cumsum(v[::-1], axis=0)[::-1]      # noqa: E731  sum over nodes k >= j
     n_force, v_force = outward(axial), outward(shear)
-    m_force = outward(shear * r[:, None]) - r[:, None] * v_force
+    m_force = outward(shear * r[:, None]) + sign * r[:, None] * v_force
     # each segment's work under a unit axial force, shear and moment at the tip (the shear's
     # moment about node j has the arm l_tip - r_j), summed over the segments
     arm = r[-1] - r
@@ -147,8 +163,8 @@ def _coupled_tip(mechs, loads, positions, lengths: Lengths, section: Section, qu
     e_flex = np.array([lengths.l1 / (ca * me),
                        lengths.l1 * lengths.l1 * lengths.l1 / (3.0 * (ca if quirks.input_link_bending_area else mi) * me),
                        lengths.l4 / (ca * me), lengths.l3 / (ca * me), lengths.l3 / (3.0 * me * mi)])
-    delta = np.zeros((len(t), 3))
-    for i, (un, uv, um) in enumerate(((c, -s, 0.0), (s, c, 0.0), (0.0, 0.0, 1.0))):   # unit loads at the tip
+    delta = np.zeros((len(c), 3))
+    for i, (un, uv, um) in enumerate(((c, sign * s, 0.0), (s, c, 0.0), (0.0, 0.0, 1.0))):   # unit loads at the tip
         delta[:, i] = un * axial_work + uv * (shear_work + arm_work) + um * moment_work
         delta[:, i] += np.einsum("ne,e,ne->n", tip_beta[:, 3:8, i], e_flex, reactions)
     return delta
@@ -182,9 +198,10 @@ def _listing_blocks(mech, start: int, quirks: Quirks):
 def _listing_deflections(linkage, positions, weights, section: Section):
     """dx, dy, rot of every node (N, n, 3) as the listing's block-diagonal product gives them
     (D034), MPRD's order and REAL*4 storage: blocks do not mix, but for D035, the tip
-    rotation taken with block 1's third column through node 2's F and beta."""
+    rotation taken with block 1's third column through node 2's F and beta; the tip's terms'
+    size (N, 3, ``structure.magnitude``) and the nodes' ``Linkage.pole_distance`` (or None)."""
     quirks, lengths = linkage.quirks, linkage.lengths
-    nodes = []
+    nodes, poles, size = [], [], None
     for start, mech in _node_blocks(linkage, positions):
         r = mech.flex_lengths[0]
         flex = flexibility(r, lengths.l1, lengths.l3, lengths.l4, section, quirks,
@@ -192,10 +209,16 @@ def _listing_deflections(linkage, positions, weights, section: Section):
         left, right = _listing_blocks(mech, start, quirks)
         loads = _load(mech.acc, weights[start:start + len(r), None, None], quirks)
         block = deflection(left, flex, loads, quirks, right=right)
+        if start == 0:
+            size = magnitude(left[0], flex[0], loads[0], right[0])
         if start == 0 and len(positions) > 1 and quirks.tip_rotation_node_2:        # D035
             block[0, :, 2] = deflection(left[0, :, :, 2:3], flex[1], loads[1], quirks, right=right[1])[:, 0]
+            size[:, 2] = magnitude(left[0, :, :, 2:3], flex[1], loads[1], right[1])[:, 0]
         nodes.append(block)
-    return np.moveaxis(np.concatenate(nodes).astype(np.float64), 0, 1)
+        rho = linkage.pole_distance(mech)
+        poles += [] if rho is None else [rho]
+    return (np.moveaxis(np.concatenate(nodes).astype(np.float64), 0, 1), size,
+            np.minimum.reduce(poles) if poles else None)
 
 
 def case3_linkage(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = None,
@@ -224,27 +247,27 @@ def _nodes(n, l2: float, density, section: Section, quirks: Quirks, all_nodes: b
     return sec, positions, node_weights(positions, l2, dens, sec.area, quirks)
 
 
-def _case3_on(linkage, sec: Section, positions, weights, all_nodes: bool) -> dict:
-    """Case III's tip (and with ``all_nodes`` every node) on a linkage; see case3_source."""
+def _case3_on(linkage, sec: Section, positions, weights, all_nodes: bool):
+    """Case III's tip (and with ``all_nodes`` every node) on a linkage, and its precision check
+    (as ``case1.run_source_case1``); see case3_source."""
     quirks, deg = linkage.quirks, linkage.deg
     listing = quirks.uncoupled_nodes                                                # D034
     xp, yp = linkage.position(positions[0])
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         if listing:
-            nodes = _listing_deflections(linkage, positions, weights, sec)
+            nodes, size, rho = _listing_deflections(linkage, positions, weights, sec)
             tip = nodes[:, 0, :]
         else:
             loads = _load(linkage.acceleration(positions[:, None]), weights[:, None, None], quirks)
             blocks = (mech for _, mech in _node_blocks(linkage, positions))
-            tip = _coupled_tip(blocks, loads, positions, linkage.lengths, sec, quirks)
+            tip, size, rho = _coupled_tip(blocks, loads, positions, linkage.lengths, sec, quirks)
     out = {"xp": xp, "yp": yp, "dx": tip[:, 0], "dy": tip[:, 1], "rot": tip[:, 2]}
+    finite = None
     if listing:     # the listing's output is every node: the legacy face checks xp, yp, then all nodes
-        check_finite(deg, "case III source", xp=out["xp"], yp=out["yp"], nodes=nodes)
+        finite = {"xp": out["xp"], "yp": out["yp"], "nodes": nodes}
         if all_nodes:
             out["nodes"] = nodes
-    else:
-        check_finite(deg, "case III source", **out)
-    return linkage.finish(out, "case III source", stacklevel=5)
+    return out, functools.partial(linkage.finish, rho=rho, size=size, extender=positions[0], finite=finite)
 
 
 def case3_source(deg, n: int = 5, lengths: Lengths = EXAMPLE.lengths, alp: float | None = None,
@@ -260,7 +283,14 @@ def case3_source(deg, n: int = 5, lengths: Lengths = EXAMPLE.lengths, alp: float
     the listing does: a non-finite value at any node is a SingularPositionError there.
     The same as case3_on_linkage(case3_linkage(deg, lengths, alp, rpm, quirks), n, ...).
     """
-    deg = angles_deg("deg", deg)
+    out, finish = run_case3_source(angles_deg("deg", deg), n, lengths, alp, rpm, density, section, quirks, all_nodes)
+    return finish(out, "case III source")
+
+
+def run_case3_source(deg: np.ndarray, n: int, lengths: Lengths, alp: float | None, rpm: float, density: float,
+                     section: Section, quirks: Quirks, all_nodes: bool = False):
+    """case3_source of checked angles ``deg``, before its precision check (as
+    ``case1.run_source_case1``)."""
     n = node_count(n)
     density = weight_lbf("density", density)
     expect("lengths", lengths, Lengths)
@@ -279,7 +309,8 @@ def case3_on_linkage(linkage: SourceLinkage, n: int = 5, density: float = DENSIT
     density = weight_lbf("density", density)
     expect("section", section, Section)
     sec, positions, weights = _nodes(n, linkage.lengths.l2, density, section, linkage.quirks, all_nodes)
-    return _case3_on(linkage, sec, positions, weights, all_nodes)
+    out, finish = _case3_on(linkage, sec, positions, weights, all_nodes)
+    return finish(out, "case III source")
 
 
 def case3_cognate(deg, n: int = 5, lengths: Lengths = EXAMPLE.lengths, alp: float | None = None,
@@ -292,7 +323,14 @@ def case3_cognate(deg, n: int = 5, lengths: Lengths = EXAMPLE.lengths, alp: floa
     D033/D034 off, the coupled n-segment model along the cognate's extender.
     Returns ``xp, yp`` (source), ``cxp, cyp`` (the cognate's), ``dx, dy`` (in), ``rot`` (rad), as
     case2_cognate."""
-    deg = angles_deg("deg", deg)
+    out, finish = run_case3_cognate(angles_deg("deg", deg), n, lengths, alp, rpm, density, section, quirks)
+    return finish(out, "case III cognate")
+
+
+def run_case3_cognate(deg: np.ndarray, n: int, lengths: Lengths, alp: float | None, rpm: float, density: float,
+                      section: Section, quirks: Quirks, warn_beta: bool = True):
+    """case3_cognate of checked angles ``deg``, before its precision check (as
+    ``case1.run_cognate_case1``)."""
     n = node_count(n)
     density = weight_lbf("density", density)
     expect("section", section, Section)
@@ -300,7 +338,7 @@ def case3_cognate(deg, n: int = 5, lengths: Lengths = EXAMPLE.lengths, alp: floa
     real4 = quirks.real4_storage
     sec = section.as_listing_holds(real4)
     dens = as_real4("density", density) if real4 else density
-    tip_mech = _cognate_linkage(deg, lengths, alp, rpm, quirks).path_point()
+    tip_mech = _cognate_linkage(deg, lengths, alp, rpm, quirks, warn_beta).path_point()
     cog = tip_mech.extra["cognate"]
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):     # a degenerate cognate's CL2 may be inf
         positions = cog.cl2 - np.arange(n) * (cog.cl2 / n)   # node_positions, unchecked: only the tip's is used
@@ -309,7 +347,9 @@ def case3_cognate(deg, n: int = 5, lengths: Lengths = EXAMPLE.lengths, alp: floa
         cog_lengths = SimpleNamespace(l1=cog.cl1, l2=cog.cl2, l3=cog.cl3, l4=cog.cl4, l5=cog.cl5)
         if quirks.uncoupled_nodes:                                                  # D034
             flex = flexibility(cog.cl2, cog.cl1, cog.cl3, cog.cl4, sec, quirks)
-            delta = deflection(tip_mech.beta, flex, _load(tip_mech.acc, weights[0], quirks), quirks)
+            load = _load(tip_mech.acc, weights[0], quirks)
+            delta, size = deflection(tip_mech.beta, flex, load, quirks), magnitude(tip_mech.beta, flex, load)
+            rho = tip_mech.extra["linkage"].pole_distance(tip_mech)
         else:
             inner = positions[1:]
             if not np.isfinite(inner).all():        # as cognate_mechanics(extender=...) refuses a node there
@@ -317,7 +357,7 @@ def case3_cognate(deg, n: int = 5, lengths: Lengths = EXAMPLE.lengths, alp: floa
             linkage = tip_mech.extra["linkage"]
             loads = _load(linkage.acceleration(positions[:, None]), weights[:, None, None], quirks)
             blocks = (mech for _, mech in _node_blocks(linkage, positions))
-            delta = _coupled_tip(blocks, loads, positions, cog_lengths, sec, quirks)
+            delta, size, rho = _coupled_tip(blocks, loads, positions, cog_lengths, sec, quirks)
     mech = tip_mech
     dx, dy = delta[:, 0].astype(np.float64), delta[:, 1].astype(np.float64)
     if not quirks.cognate_frame:                                                     # D025
@@ -325,8 +365,7 @@ def case3_cognate(deg, n: int = 5, lengths: Lengths = EXAMPLE.lengths, alp: floa
         dx, dy = dx * c - dy * s, dx * s + dy * c
     out = {"xp": mech.extra["xp"], "yp": mech.extra["yp"], "cxp": mech.extra["cxp"], "cyp": mech.extra["cyp"],
            "dx": dx, "dy": dy, "rot": delta[:, 2].astype(np.float64)}
-    check_finite(deg, "case III cognate", **out)
-    return mech.extra["linkage"].finish(out, "case III cognate")
+    return out, functools.partial(mech.extra["linkage"].finish, rho=rho, size=size, extender=cog.cl2)
 
 
 __all__ = ["LISTING", "COGNATE_LISTING", "DENSITY", "node_positions", "node_weights", "case3_source",

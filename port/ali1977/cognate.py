@@ -24,8 +24,8 @@ from numba import njit
 from ...checks import angles_deg, parameter, speed_rpm
 from .. import libm
 from .data import EXAMPLE, _pi, expect
-from .fourbar import (Cognate, Lengths, cannot_close, freudenstein_constants, half_angle_roots,
-                      raise_first_assembly_failure, warn_listing_beta)
+from .fourbar import (Cognate, Lengths, cannot_close, construction_factor, freudenstein_constants,
+                      half_angle_roots, raise_first_assembly_failure, warn_listing_beta)
 from .linkage import Linkage, _extender_lengths, _finite, _inverse_rows, _path_points, ieee
 from .quirks import PRINTED, Quirks
 from ..real4 import store
@@ -77,11 +77,13 @@ def _cognate_motion(deg, pi, source_k, cognate_k, l1, l2, alp, cl1, cl3, cl4, ca
 @njit(cache=True, error_model="numpy")
 def _cognate_beta(cl2, cl3, c2, s2, c3, s3, c4, s4, c, s, cctx, moment_row):
     """Cognate listing, statements 61-110: beta (len(cl2), N, 8, 3) of the path point at each
-    extender length ``cl2`` (in) and input angle (c, s: cos, sin of gam).  Coupler equilibrium of
+    extender length ``cl2`` (in) and input angle (c, s: cos, sin of gam), and CG1, CH1, CI1 of
+    its Cramer matrix, (3, len(cl2), N).  Coupler equilibrium of
     the crossed cognate, eqs. (20)-(24): the pin forces f4, f5 act at A along (-cos t2, -sin t2),
     (sin t2, -cos t2); f6 at B along (cos t4, sin t4); the loop is
     CL1 e^{i t2} - CL3 e^{i t3} + CL4 e^{i t4} = CL5."""
     beta = np.zeros((cl2.size, c2.size, 8, 3))
+    ghi = np.empty((3, cl2.size, c2.size))
     for j in range(cl2.size):
         r = cl2[j]
         for n in range(c2.size):
@@ -103,7 +105,8 @@ def _cognate_beta(cl2, cl3, c2, s2, c3, s3, c4, s4, c, s, cctx, moment_row):
             beta[j, n, 6, 1] = -r * c[n] * cctx[n] / cl3
             beta[j, n, 6, 2] = cctx[n] / cl3
             beta[j, n, 7, 0], beta[j, n, 7, 1], beta[j, n, 7, 2] = -r * s[n], -r * c[n], 1.0
-    return beta
+            ghi[0, j, n], ghi[1, j, n], ghi[2, j, n] = g1, h1, i1
+    return beta, ghi
 
 
 @dataclass
@@ -113,7 +116,7 @@ class CognateLinkage(Linkage):
     ``gam`` = gamma - t3, ``ext_angle`` = pi - gam; ``cg, sg`` cos and sin of gam; ``cctx`` =
     cot(t3 - t4); ``turn_cos``, ``turn_sin`` of -beta (the turn into the source frame).
     ``xp, yp`` (in): the source's coupler point as this listing computes it (the rigid-mode
-    columns of Table I).
+    columns of Table I); ``alp`` (rad) the source's coupler angle.
     """
     cognate: Cognate
     gam: np.ndarray
@@ -124,11 +127,17 @@ class CognateLinkage(Linkage):
     turn_sin: float
     xp: np.ndarray
     yp: np.ndarray
+    alp: float
+    DETERMINANT_BUGS = (("cognate_moment_row", "D026"),)
 
     def loops(self) -> tuple[list, list]:
         lengths, cog = self.lengths, self.cognate
         loops = [(lengths.l1, lengths.l3, lengths.l4, lengths.l5), (cog.cl1, cog.cl3, cog.cl4, cog.cl5)]
         return loops, [lengths.l2, cog.cl2, *loops[0], *loops[1]]
+
+    def construction(self) -> float:
+        """The rounding the cognate carries from its construction (``fourbar.construction_factor``)."""
+        return construction_factor(self.lengths.l2, self.lengths.l3, self.alp, self.quirks.cognate_beta_quadrant)
 
     def _point(self, cl2):
         return _path_points(_extender_lengths(cl2), self.cognate.cl1, self.om2, self.om3, self.alph3,
@@ -143,10 +152,10 @@ class CognateLinkage(Linkage):
         cog, real4 = self.cognate, self.quirks.real4_storage
         cl2 = cog.cl2 if extender is None else extender
         position, acc = self._point(cl2)
-        beta = _cognate_beta(_extender_lengths(cl2), cog.cl3, self.c2, self.s2, self.c3, self.s3, self.c4, self.s4,
-                             self.cg, self.sg, self.cctx, self.quirks.cognate_moment_row)
+        beta, ghi = _cognate_beta(_extender_lengths(cl2), cog.cl3, self.c2, self.s2, self.c3, self.s3, self.c4,
+                                  self.s4, self.cg, self.sg, self.cctx, self.quirks.cognate_moment_row)
         if not np.ndim(cl2):
-            position, acc, beta = position[:, 0], acc[0], beta[0]
+            position, acc, beta, ghi = position[:, 0], acc[0], beta[0], ghi[:, 0]
         xpp, ypp = position
         xdp = store(xpp - cog.cl5, real4).astype(np.float64)                  # XDP is REAL*4
         cxp = store((xdp * self.turn_cos) - (ypp * self.turn_sin), real4).astype(np.float64) + self.lengths.l5
@@ -155,6 +164,7 @@ class CognateLinkage(Linkage):
                          extra={"xp": self.xp, "yp": self.yp, "cxp": cxp, "cyp": cyp, "t2": self.t2,
                                 "t3": self.t3, "t4": self.t4, "om2": self.om2, "om3": self.om3,
                                 "alph3": self.alph3, "cognate": cog, "ext_angle": self.ext_angle,
+                                "coefficients": (-self.c2, self.s2, self.c4, -self.s2, -self.c2, self.s4, *ghi),
                                 "linkage": self})
 
 
@@ -166,8 +176,8 @@ def cognate_linkage(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None =
 
 
 def _cognate_linkage(deg: np.ndarray, lengths: Lengths, alp: float | None, rpm: float,
-                     quirks: Quirks) -> CognateLinkage:
-    """cognate_linkage of checked angles ``deg``."""
+                     quirks: Quirks, warn_beta: bool = True) -> CognateLinkage:
+    """cognate_linkage of checked angles ``deg``; ``warn_beta``: warn D141 where it bites."""
     expect("lengths", lengths, Lengths)
     expect("quirks", quirks, Quirks)
     pi = _pi(quirks)
@@ -176,7 +186,7 @@ def _cognate_linkage(deg: np.ndarray, lengths: Lengths, alp: float | None, rpm: 
     alp, rpm = parameter("alp", alp), speed_rpm(rpm)
     speed = float(np.float32(rpm)) if quirks.real4_storage else float(rpm)       # S is REAL*4 in the listing
     l1, l2, l3, l4, l5 = lengths.l1, lengths.l2, lengths.l3, lengths.l4, lengths.l5
-    if quirks.cognate_beta_quadrant:
+    if quirks.cognate_beta_quadrant and warn_beta:
         warn_listing_beta("the port with cognate_beta_quadrant on", lengths.l2, lengths.l3, alp, stacklevel=4)
     cog = Cognate.of(lengths, alp, pi, signed_beta=not quirks.cognate_beta_quadrant)
     om2 = (2.0 * pi * speed) / 60.0
@@ -194,7 +204,7 @@ def _cognate_linkage(deg: np.ndarray, lengths: Lengths, alp: float | None, rpm: 
     return CognateLinkage(deg=deg, lengths=lengths, quirks=quirks, t2=t2, t3=t3, t4=t4, ext_angle=ext_angle, om2=om2,
                           om3=om3, alph3=alph3, c2=c2, s2=s2, c3=c3, s3=s3, c4=c4, s4=s4, ce=ce, se=se,
                           pins=motion[22:26], cognate=cog, gam=gam, cg=cg, sg=sg, cctx=cctx, turn_cos=turn_cos,
-                          turn_sin=turn_sin, xp=xp, yp=yp)
+                          turn_sin=turn_sin, xp=xp, yp=yp, alp=alp)
 
 
 def cognate_mechanics(deg, lengths: Lengths = EXAMPLE.lengths, alp: float | None = None,

@@ -121,22 +121,49 @@ def check_finite(deg, who, **arrays):
             raise SingularPositionError(f"{who}: non-finite {name}", float(deg[i]))
 
 
+#: how many units of rounding of l3 - l2 cos(alp) the listing's CBTA may carry (its law of
+#: cosines: 2 u (l2 + l3)^2 / l3, D165), with a margin
+CBTA_ROUNDING = 16.0
+
+
 def listing_beta_is_wrong(l2: float, l3: float, alp: float) -> bool:
     """True where the cognate listings' BETA = ATAN(SQRT(1 - CBTA**2)/CBTA) (register D141) is
     not the cognate frame's turn: the coupler point on the other side of the coupler
-    (sin(alp) < 0) or the coupler triangle obtuse at the follower pin B (l2 cos(alp) > l3).
+    (sin(alp) < 0) or the coupler triangle obtuse at the follower pin B (l2 cos(alp) > l3), or
+    within the rounding of the listing's CBTA of that (CBTA = (l3 - l2 cos(alp)) / CL4 within
+    its rounding of 0: which quadrant the listing takes is decided by rounding, D165).
     Lengths in inches, ``alp`` in radians."""
-    return math.sin(alp) < 0.0 or l2 * math.cos(alp) > l3
+    margin = CBTA_ROUNDING * 2.0 ** -53 * (l2 + l3) ** 2 / l3
+    return math.sin(alp) < 0.0 or l2 * math.cos(alp) > l3 - margin
 
 
 def warn_listing_beta(who: str, l2: float, l3: float, alp: float, stacklevel: int = 3) -> None:
     """A ListingBugWarning (D141) where ``listing_beta_is_wrong``: the listing's cognate is then
-    turned into the wrong place and its coupler point leaves the source's coupler curve."""
+    turned into the wrong place (or, at the obtuse triangle's edge, into a place rounding
+    decides) and its coupler point leaves the source's coupler curve."""
     if listing_beta_is_wrong(l2, l3, alp):
         warnings.warn(ListingBugWarning(
             f"{who}: with alp = {math.degrees(alp):g} deg (l2 = {l2:g}, l3 = {l3:g} in) the listing's "
-            "BETA drops the sign or quadrant of the coupler triangle's angle at B, so the cognate is "
-            "turned into the wrong place", "D141"), stacklevel=stacklevel)
+            "BETA drops the sign or quadrant of the coupler triangle's angle at B (or rounding decides it), so "
+            "the cognate is turned into the wrong place", "D141"), stacklevel=stacklevel)
+
+
+def construction_factor(l2: float, l3: float, alp: float, listing_beta: bool) -> float:
+    """How many units of rounding (relative) the crossed cognate's links and angles carry from
+    their construction out of the source's l2, l3 (in) and ``alp`` (rad) (``Cognate.of``), at
+    least 1: the listing's law of cosines loses (l2 + l3)^2 / CL4^2 as the coupler point nears
+    the follower pin B, and its BETA = ATAN(SQRT(1 - CBTA**2)/CBTA) (l2 + l3)^2 / (l2 l3 sin(alp))
+    as the coupler point nears the coupler's line (at most a square root of the rounding: the
+    sine's half digits); the corrected construction (components, atan2) (l2 + l3) / CL4."""
+    along, across = l3 - l2 * math.cos(alp), l2 * math.sin(alp)
+    cl4 = math.hypot(along, across)
+    with np.errstate(divide="ignore"):
+        if not listing_beta:
+            return max(1.0, (l2 + l3) / cl4) if cl4 > 0.0 else math.inf
+        links = (l2 + l3) ** 2 / cl4 ** 2 if cl4 > 0.0 else math.inf
+        angle = min((l2 + l3) ** 2 / (l2 * l3 * abs(math.sin(alp))) if across else math.inf,
+                    math.sqrt(2.0 * (l2 + l3) ** 2 / (2.0 ** -53 * l3 * cl4)) if cl4 > 0.0 else math.inf)
+    return max(1.0, links, angle)
 
 
 @dataclass(frozen=True)

@@ -12,11 +12,13 @@ Units: inch, pound-force, second; angles in radians inside.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import ClassVar
 
 import numpy as np
 from numba import njit
 
-from .conditioning import check_precision, condition, spread
+from ...errors import SingularPositionError
+from .conditioning import cancellation, check_precision, condition, raise_at_pole, relative_determinant, spread
 from .data import _pi
 from .fourbar import Lengths, check_finite
 from .quirks import Quirks
@@ -137,15 +139,57 @@ class Linkage:
         """The four-bars this linkage solves (each l1, l3, l4, l5, in) and all its links."""
         raise NotImplementedError
 
-    def finish(self, out: dict, who: str, stacklevel: int = 4) -> dict:
-        """A program's results ``out`` checked for their precision (``conditioning``: raise at
-        a toggle to working precision, warn where half the digits are gone), with the per-angle
-        ``condition`` added."""
+    #: the quirks that put a listing's bug into its path points' Cramer matrix, with their
+    #: register ids (the source's G1 and I1, the cognate's moment row)
+    DETERMINANT_BUGS: ClassVar[tuple] = ()
+
+    def construction(self) -> float:
+        """The rounding (in units) the links carry from their construction: 1 (the cognate's more)."""
+        return 1.0
+
+    def determinant_bugs(self) -> tuple:
+        """The register ids of the bugs (switched on) in the Cramer matrix this linkage solves."""
+        return tuple(entry for quirk, entry in self.DETERMINANT_BUGS if getattr(self.quirks, quirk))
+
+    def pole_distance(self, *mechs: Mechanics) -> np.ndarray | None:
+        """Per input angle, the smallest ``conditioning.relative_determinant`` of the Cramer
+        matrices of the path points ``mechs`` (of this linkage; any number of points each), or
+        None where no bug of the listing is in them (the thesis's matrix vanishes only at a
+        toggle, which ``condition`` covers)."""
+        if not self.determinant_bugs():
+            return None
+        rho = [relative_determinant(*np.broadcast_arrays(*m.extra["coefficients"])).reshape(-1, len(self.deg))
+               for m in mechs]
+        return np.concatenate(rho).min(axis=0)
+
+    def finish(self, out: dict, who: str, stacklevel: int = 4, rho=None, size=None, extender: float = 1.0,
+               finite: dict | None = None) -> dict:
+        """A program's results ``out`` checked: a SingularPositionError at the first input angle
+        where a result (``finite``: the arrays to check, in order; default every array of
+        ``out`` but ``deg``) is not finite, naming the listing's bug where its Cramer determinant
+        vanishes there (``conditioning.raise_at_pole``); then the precision rule
+        (``conditioning.check_precision``: raise at a toggle or a listing's pole to working
+        precision, warn near a listing's pole and where half the digits are gone).  Adds the
+        per-angle ``condition`` and ``error_bound`` (the bound on the relative error of the
+        deflection vector, ``conditioning.expected_error``).  ``rho`` (``pole_distance``) and
+        ``size`` (the deflection's terms, (N, 3), ``structure.magnitude``) of the path point,
+        whose extender is ``extender`` (in).  The links' construction (``construction``) and,
+        beyond a turn, the input angle's own rounding (|deg| / 360 turns) scale the positions'
+        terms of the bound."""
+        finite = {k: v for k, v in out.items() if k != "deg"} if finite is None else finite
+        try:
+            check_finite(self.deg, who, **finite)
+        except SingularPositionError as error:
+            raise_at_pole(who, self.deg, rho, self.determinant_bugs(), self.deg.tolist().index(error.angle_deg))
+            raise
         loops, links = self.loops()
         link_spread = spread(links)
         kappa = condition(self.deg, _pi(self.quirks), loops, link_spread)
-        check_precision(self.deg, kappa, link_spread, self.quirks.real4_storage, who, stacklevel=stacklevel)
-        out["condition"] = kappa
+        cancelled = 1.0 if size is None else cancellation(out["dx"], out["dy"], out["rot"], extender, size)
+        bound = check_precision(self.deg, kappa, self.quirks.real4_storage, who, stacklevel=stacklevel,
+                                rho=rho, bugs=self.determinant_bugs(), cancelled=cancelled,
+                                construction=self.construction() * np.maximum(1.0, np.abs(self.deg) / 360.0))
+        out["condition"], out["error_bound"] = kappa, bound
         return out
 
     def pin_accelerations(self):

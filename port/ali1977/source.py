@@ -94,6 +94,7 @@ class SourceLinkage(Linkage):
     ``ext_angle`` = alp + t3, ``ctx`` = cot(t4 - t3)."""
     alp: float
     ctx: np.ndarray
+    DETERMINANT_BUGS = (("g_coefficient", "D014"), ("i_coefficient", "D015"))
 
     def loops(self) -> tuple[list, list]:
         lengths = self.lengths

@@ -110,6 +110,16 @@ def deflection(beta: np.ndarray, flex: np.ndarray, load: np.ndarray, quirks: Qui
     return product(left, load[..., :, None], real4)[..., 0]      # MPRD(A,B,R,3,3 or 8,..,1)
 
 
+def magnitude(beta: np.ndarray, flex: np.ndarray, load: np.ndarray, right: np.ndarray | None = None) -> np.ndarray:
+    """|beta|^T |F| |right| |P| (.., 3), in double: the size of the deflection delta = beta^T F
+    right P before its terms cancel, the scale of the rounding error of every product and stored
+    entry (``conditioning.cancellation``)."""
+    beta = np.abs(np.asarray(beta, dtype=np.float64))
+    right = beta if right is None else np.abs(np.asarray(right, dtype=np.float64))
+    size = np.matmul(np.matmul(np.swapaxes(beta, -1, -2), np.abs(np.asarray(flex, dtype=np.float64))), right)
+    return np.matmul(size, np.abs(np.asarray(load, dtype=np.float64))[..., :, None])[..., 0]
+
+
 @dataclass(frozen=True)
 class Mechanics:
     """One mechanism's Case I state over the input angles, in its own frame.

@@ -164,7 +164,7 @@ def test_cognate_segmented_extender_with_a_tip_load_is_the_same_beam(n):
     loads = np.zeros((n, len(deg), 3))
     loads[0] = np.stack([-tip.acc[:, 0], -tip.acc[:, 1], 0 * deg], -1) * (2.0 / (12 * 32.178))
     lengths = Lengths(cog.cl1, cog.cl2, cog.cl3, cog.cl4, cog.cl5)
-    coupled = _coupled_tip(mechs, loads, positions, lengths, EXAMPLE.section, CORRECTED)
+    coupled, _, _ = _coupled_tip(mechs, loads, positions, lengths, EXAMPLE.section, CORRECTED)
     single = deflection(tip.beta, flexibility(cog.cl2, cog.cl1, cog.cl3, cog.cl4, EXAMPLE.section, CORRECTED),
                         loads[0], CORRECTED)
     np.testing.assert_allclose(coupled, single, rtol=1e-10, atol=1e-15)
@@ -181,7 +181,7 @@ def test_segmented_extender_with_a_tip_load_is_the_same_beam(n):
     tip_load = np.stack([-mechs[0].acc[:, 0], -mechs[0].acc[:, 1], 0 * deg], -1) * (2.0 / (12 * 32.178))
     loads = np.zeros((n,) + tip_load.shape)
     loads[0] = tip_load
-    coupled = _coupled_tip(mechs, loads, positions, EXAMPLE.lengths, EXAMPLE.section, CORRECTED)
+    coupled, _, _ = _coupled_tip(mechs, loads, positions, EXAMPLE.lengths, EXAMPLE.section, CORRECTED)
     case1 = source_case1(deg, rpm=300.0, quirks=CORRECTED)
     np.testing.assert_allclose(coupled[:, 0], case1["dx"], rtol=1e-10)
     np.testing.assert_allclose(coupled[:, 1], case1["dy"], rtol=1e-10)

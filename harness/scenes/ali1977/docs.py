@@ -27,4 +27,68 @@ def structure_dynamics() -> str:
     return "\n".join(lines) + "\n"
 
 
-BLOCKS = {"structure dynamics": structure_dynamics}
+def ked_bound() -> str:
+    """The K.E.D. error bound's calibration sample as ``linkrepro ked-bound --record`` last wrote
+    it (``calibration.RECORD``): per engine, runs, points checked against 60 digits, refused,
+    warned, the worst error over its bound, the points over it and the silent failures."""
+    import pandas as pd
+    from .calibration import RECORD
+    table = pd.read_csv(RECORD)
+    seed, draws = int(table["seed"].iloc[0]), int(table["draws"].iloc[0])
+    lines = [ked_formula(), f"`linkrepro ked-bound --draws {draws} --seed {seed}`: {int(table['runs'].sum())} runs.", "",
+             "| engine | runs | points checked | refused | warned | worst error / bound | over the bound | "
+             "silent failures |", "|---|---|---|---|---|---|---|---|"]
+    lines += [f"| {r.engine} | {r.runs} | {r.points} | {r.refused} | {r.warned} | {r.worst_error_over_bound:.2g} | "
+              f"{r.over_bound} | {r.silent_failures} |" for r in table.itertuples()]
+    return "\n".join(lines) + "\n"
+
+
+def ked_formula() -> str:
+    """The bound and the pole rule as ``port.ali1977.conditioning`` holds them, in words."""
+    from ....port.ali1977 import conditioning as c
+    return (f"The bound is ({c.STORAGE_FACTOR:g} u_s + {c.CONDITION_FACTOR:g} u kappa K + {c.POLE_FACTOR:g} u K / rho) "
+            "times the deflection's cancellation (the size of its terms before they cancel, over its length): u_s "
+            "the storage's unit roundoff (REAL*4 or double), u the double's, kappa the condition near a toggle, K the "
+            "rounding the crossed cognate carries from its construction (1 for the source), rho the listing's Cramer "
+            "determinant R1 over the sum of its six terms' magnitudes (with the listing's bugs only). A "
+            f"ListingBugWarning where rho < {c.POLE_NEAR:g}, a SingularPositionError where the bound without the "
+            "cancellation reaches 1, a PrecisionWarning where the bound passes half the stored digits.\n")
+
+
+def ked_bound_summary() -> str:
+    """The rule (``ked_formula``) and one sentence of the record (``ked_bound``): runs, points
+    checked, over the bound, silent."""
+    import pandas as pd
+    from .calibration import RECORD
+    t = pd.read_csv(RECORD)
+    return ked_formula() + (f"Measured: {int(t['runs'].sum())} runs (`linkrepro ked-bound`: random geometries, sections, toggles and listing "
+            f"poles, Cases I-III, source and cognate, legacy and the port, REAL*4 and double), "
+            f"{int(t['points'].sum())} points checked against 60 digits: {int(t['over_bound'].sum())} over their "
+            f"bound, {int(t['silent_failures'].sum())} silent (largest error / bound "
+            f"{t['worst_error_over_bound'].max():.2g}).\n")
+
+
+def ked_example() -> str:
+    """The published example's rows (legacy, each program at its printed inputs): the largest
+    bound on the deflection's relative error the engine states, at which angle, against the
+    warning level, and what the engine said."""
+    import math
+    import warnings
+
+    from ....errors import LinkreproWarning
+    from ....legacy import ali1977
+    from ....port.ali1977.conditioning import REAL4_UNIT
+    lines = ["| program | largest error bound (at deg) | warning level | warnings |", "|---|---|---|---|"]
+    for name in ("case1_source", "case1_cognate", "case2_source", "case2_cognate", "case3_source", "case3_cognate"):
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always", LinkreproWarning)
+            out = getattr(ali1977, name)()
+        i = int(np.argmax(out["error_bound"]))
+        said = sorted({w.category.__name__ for w in caught if issubclass(w.category, LinkreproWarning)})
+        lines.append(f"| {name} | {out['error_bound'][i]:.2g} ({out['deg'][i]:g}) | {math.sqrt(REAL4_UNIT):.2g} | "
+                     f"{', '.join(said) or 'none'} |")
+    return "\n".join(lines) + "\n"
+
+
+BLOCKS = {"structure dynamics": structure_dynamics, "ked bound": ked_bound, "ked bound summary": ked_bound_summary,
+          "ked example": ked_example}

@@ -1,6 +1,9 @@
 """Ali (1977)'s part of the fuzz (``harness/fuzz.py``): the K.E.D. programs' entry points in
 legacy and port, the SSP routines, the argument dataclasses; the names their call texts use;
-the check a corrected cognate must pass (its coupler point on the source's)."""
+the check a corrected cognate must pass (its coupler point on the source's); the listing poles
+(each program's geometry driven onto, and a few ulps off, a zero of its listing's Cramer
+determinant at a grid angle: ``poles.py``), whose every returned deflection must lie within the
+bound the engine states, against the listing's equations in 60 digits (``exact.listing``)."""
 from __future__ import annotations
 
 from ....port.ali1977.quirks import Quirks
@@ -98,6 +101,106 @@ def _quirk_names() -> list[str]:
     return Quirks.names()
 
 
+#: the listing's quirks of each program, as call text (the listing poles' port calls)
+LISTING_TEXT = {"case1_source": "PRINTED", "case1_cognate": "PRINTED",
+                "case2_source": "port.ali1977.case2.LISTING", "case2_cognate": "port.ali1977.case2.COGNATE_LISTING",
+                "case3_source": "port.ali1977.case3.LISTING", "case3_cognate": "port.ali1977.case3.COGNATE_LISTING"}
+PORT_TEXT = {"case1_source": "port.ali1977.case1.source_case1", "case1_cognate": "port.ali1977.case1.cognate_case1",
+             "case2_source": "port.ali1977.case2.case2_source", "case2_cognate": "port.ali1977.case2.case2_cognate",
+             "case3_source": "port.ali1977.case3.case3_source", "case3_cognate": "port.ali1977.case3.case3_cognate"}
+
+
+def _f32(rng, lo: float, hi: float) -> str:
+    """A REAL*4 number in [lo, hi] (the listings' literals and weights are), as text."""
+    import numpy as np
+    return repr(float(np.float32(rng.uniform(lo, hi))))
+
+
+def pole_geometry(rng, program: str) -> tuple[list[float], float, float]:
+    """(l1..l5 in, alp rad, the grid angle in deg) with ``program``'s listing determinant at a
+    zero there (``poles.pole_alps``), exactly or 1 to 16 ulps off (two calls in five), or 2^10 to
+    2^46 ulps off (where R1 is 1e-13 to 1e-2 of its terms); a four-bar near the example (Case
+    III: l2 over 8 in).  None where eight tries find no pole."""
+    import numpy as np
+
+    from ....port.ali1977.fourbar import Lengths
+    from . import poles
+    for _ in range(8):
+        links = [float(near(rng, v, spread=0.3)) for v in (10.0, 14.0, 30.0, 25.0, 30.0)]
+        links[1] = max(links[1], 9.0) if program.startswith("case3") else links[1]
+        at = float(rng.choice((60.0, 100.0, 120.0, 200.0, 240.0, 300.0)))
+        found = poles.pole_alps(program, at, Lengths(*links), grid=37)
+        if found:
+            alp, off = rng.choice(found), rng.choice((0, 1, -1, 16, -16)) if rng.random() < 0.4 else 0
+            if not off:
+                off = rng.choice((1, -1)) * round(2.0 ** rng.uniform(10.0, 46.0))
+            return links, alp + off * float(np.spacing(alp)) if abs(off) > 16 else poles.nudged(alp, off), at
+    return None
+
+
+def pole_ked(program: str, port: bool):
+    """The listing poles: ``program`` in legacy (``ali1977.<program>``, on the grid of step 20 deg)
+    or in the port with its listing's bugs (at the pole's angle and two others), the geometry on
+    a zero of the listing's determinant (``pole_geometry``), REAL*4 section, weight and speed."""
+    def spec(rng):
+        geometry = pole_geometry(rng, program)
+        links, alp, at = geometry if geometry else ([10.0, 14.0, 30.0, 25.0, 30.0], 1.0, 100.0)
+        weight = _f32(rng, 0.5, 5.0) if program.startswith("case1") else _f32(rng, 0.02, 0.2)
+        area = _f32(rng, 0.05, 1.0)
+        if port:
+            args = [Arg(None, f"np.array([0.0, {at!r}, {at + 20.0!r}])", ANGLES)]
+            args += [Arg("n", "5", INT)] if program.startswith("case3") else []
+            args += [Arg("lengths", Call("Lengths", [Arg(None, repr(v), FLOAT) for v in links]), CONTAINER)]
+        else:
+            args = [Arg(name, repr(v), FLOAT) for name, v in zip(("l1", "l2", "l3", "l4", "l5"), links)]
+        args += [Arg("alp", repr(alp), FLOAT), Arg("rpm", str(rng.randint(100, 900)) + ".0", FLOAT),
+                 Arg("mass_lbf" if program.startswith("case1") else "density", weight, FLOAT)]
+        if port:
+            args += [Arg("section", Call("Section", [Arg(None, area, FLOAT), Arg(None, _f32(rng, 1e6, 3e7), FLOAT),
+                                                     Arg(None, _f32(rng, 1e-4, 0.05), FLOAT)]), CONTAINER),
+                     Arg("quirks", LISTING_TEXT[program], QUIRKS)]
+            return Call(PORT_TEXT[program], args)
+        args += [Arg("area", area, FLOAT), Arg("modulus", _f32(rng, 1e6, 3e7), FLOAT),
+                 Arg("inertia", _f32(rng, 1e-4, 0.05), FLOAT), Arg("step_deg", "20.0", FLOAT)]
+        return Call(f"ali1977.{program}", args)
+    return spec
+
+
+def _within_bound(program: str):
+    """The check of a listing pole's call: every deflection vector it returned (dx, dy, extender
+    * rot) within the ``error_bound`` it states of the program's own equations in 60 digits (the
+    listing's quirks, or the call's)."""
+    def check(arguments, result) -> str | None:
+        import numpy as np
+
+        from ....port.ali1977.fourbar import Lengths
+        from ....port.ali1977.structure import Section
+        from . import exact, poles
+        positional, named = arguments
+        if "lengths" in named:
+            lengths, section, quirks, deg = named["lengths"], named["section"], named["quirks"], positional[0]
+        else:
+            lengths = Lengths(*(named[k] for k in ("l1", "l2", "l3", "l4", "l5")))
+            section = Section(named["area"], named["modulus"], named["inertia"])
+            quirks, deg = poles.LISTINGS[program][0], result["deg"]
+        weight = named["mass_lbf" if program.startswith("case1") else "density"]
+        for k, angle in enumerate(np.asarray(deg, dtype=float)):
+            try:
+                ref = exact.listing(program, float(angle), lengths, named["alp"], named["rpm"], weight, section, quirks,
+                                    n=int(named.get("n", 5)))
+            except (ArithmeticError, ZeroDivisionError):
+                continue
+            truth = np.array([ref["dx"], ref["dy"], ref["extender"] * ref["rot"]])
+            got = np.array([result["dx"][k], result["dy"][k], ref["extender"] * result["rot"][k]])
+            scale = np.linalg.norm(truth)
+            error = np.linalg.norm(got - truth) / scale if scale else np.linalg.norm(got)
+            if not error <= result["error_bound"][k]:
+                return (f"at {angle:g} deg the deflection is {error:.3g} off the listing's equations in 60 digits, "
+                        f"over its bound {result['error_bound'][k]:.3g}")
+        return None
+    return check
+
+
 CASE2 = ("port.ali1977.case2.LISTING", "port.ali1977.case2.COGNATE_LISTING")
 CASE3 = ("port.ali1977.case3.LISTING", "port.ali1977.case3.COGNATE_LISTING")
 LEGACY = ("case1_source", "case1_cognate", "case2_source", "case2_cognate", "case3_source", "case3_cognate")
@@ -121,7 +224,8 @@ ENTRIES = [Entry(f"ali1977.{f}", legacy_ked(f, "mass_lbf" if f.startswith("case1
           check="cognate"),
     Entry("port.ali1977.fourbar.Lengths", lengths_call),
     Entry("port.ali1977.case1.Section", section_call),
-]
+] + [Entry(f"listing pole: {'port' if port else 'ali1977'}.{program}", pole_ked(program, port), angles=True,
+           check=f"pole:{program}") for program in LISTING_TEXT for port in (False, True)]
 
 #: every program once at its example, in both quirk modes (compiles the kernels)
 WARM_UP = tuple(f"{engine}(np.arange(0.0, 360.0, 90.0), quirks={mode})" for mode in ("PRINTED", "CORRECTED")
@@ -160,4 +264,4 @@ def _cognate_coincides(arguments, result) -> str | None:
     return None
 
 
-CHECKS = {"cognate": _cognate_coincides}
+CHECKS = {"cognate": _cognate_coincides, **{f"pole:{program}": _within_bound(program) for program in LISTING_TEXT}}

@@ -89,7 +89,8 @@ CONDITIONING = {
     "spread": Q("the links' spread: longest link length / shortest", ""),
     "condition": Q("the condition the engines compute: the links' spread / sin^2(transmission angle)", ""),
     "engine": Q("engine (float64: the corrected port; real4: the same with the listings' REAL*4 storage)", ""),
-    "bound": Q("the engines' bound on the relative error at this condition and spread", ""),
+    "bound": Q("the bound on the relative error the engine returns with the point (error_bound; where it refused, "
+               "the bound of a deflection whose terms do not cancel)", ""),
     "error": Q("relative error of the Case I source deflection (dx, dy, l2 rot) against the same equations in "
                "60 digits (empty where the engine refused)", ""),
     "verdict": Q("what the engine did (returned, PrecisionWarning, SingularPositionError or AssemblyError)", ""),
