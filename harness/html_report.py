@@ -191,8 +191,9 @@ class PageSizeWarning(UserWarning):
     """report.html is larger than ``PAGE_BUDGET``; it is still written."""
 
 
-def render(folder: "Folder") -> str:
-    """The page's HTML over what ``folder`` holds (``report_folder.collect``)."""
+def render(folder: "Folder", latest: str = "") -> str:
+    """The page's HTML over what ``folder`` holds (``report_folder.collect``); ``latest``: a line
+    on the run that just ended."""
     register = register_mod.load()
     blocks: dict[tuple, str] = {}
     cells: dict[str, dict] = {}
@@ -205,7 +206,8 @@ def render(folder: "Folder") -> str:
     env = jinja2.Environment(loader=jinja2.FileSystemLoader(TEMPLATES), autoescape=True,
                              undefined=jinja2.StrictUndefined, trim_blocks=True, lstrip_blocks=True)
     return env.get_template("report.html.j2").render(
-        sections=sections, absent=folder.absent, out_dir=str(folder.out_dir), engines=ENGINES,
+        sections=sections, absent=folder.absent, absent_command=folder.absent_command, latest=latest,
+        notes=folder.notes, engines=ENGINES,
         statuses=CELL_STATUSES, columns=[(c, heading(c)) for c in COUNT_COLUMNS if c not in EXPLAINED_BY or c in kinds],
         kinds=kinds, total=headline(totals, by_kind=True),
         made=(manifest.TITLE, markdown_html("\n".join(manifest.summary(folder.out_dir)))),

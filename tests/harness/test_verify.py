@@ -13,9 +13,10 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from linkrepro.harness import verify as verify_mod
+from linkrepro.harness import run_folder, verify as verify_mod
 from linkrepro.harness.cli import main
 from linkrepro.harness.run import reproduce
+from linkrepro.harness.scene import Outcome
 
 SCENES = ["rahman1996-table5_1", "ali1977-table1"]
 
@@ -43,7 +44,8 @@ def run(recorded, tmp_path) -> Path:
 
 
 def _edit(path: Path, row: int, column: str, change) -> str:
-    """Change one cell of a CSV's text (``change(text) -> text``); returns the old text."""
+    """Change one cell of a CSV's text (``change(text) -> text``), as a run that computed it so
+    would have written it (its outcome records the file); returns the old text."""
     lines = path.read_text().splitlines()
     head = lines[0].split(",")
     cells = lines[row + 1].split(",")
@@ -51,7 +53,15 @@ def _edit(path: Path, row: int, column: str, change) -> str:
     cells[head.index(column)] = change(old)
     lines[row + 1] = ",".join(cells)
     path.write_text("\n".join(lines) + "\n")
+    _as_written(path.parent)
     return old
+
+
+def _as_written(folder: Path) -> None:
+    """Record a scene folder's files in its outcome, as a run that wrote them so does."""
+    outcome = Outcome.load(folder.parent, folder.name)
+    outcome.files = run_folder.file_hashes(folder)
+    outcome.save(folder.parent)
 
 
 def _manifest(folder: Path, **fields) -> None:
@@ -99,6 +109,7 @@ def test_a_status_that_changes_fails_under_any_policy(recorded, run):
 def test_a_missing_or_new_csv_is_named(recorded, run):
     (run / "ali1977-table1" / "identities.csv").unlink()
     shutil.copyfile(run / "ali1977-table1" / "legacy.csv", run / "ali1977-table1" / "extra.csv")
+    _as_written(run / "ali1977-table1")
     status, text, _ = _cli("verify", "--out", str(run), "--reference", str(recorded[1]))
     assert status == 1 and "identities.csv: missing in the run" in text and "extra.csv: not in the reference" in text
 
