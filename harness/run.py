@@ -5,6 +5,7 @@ import ctypes
 import gc
 import multiprocessing
 import os
+import shutil
 import signal
 import tempfile
 import threading
@@ -224,13 +225,15 @@ def reproduce(names: list[str] | None, out_dir: Path, measure_readings: bool = T
             run_id = partial.name
             results = _run_groups(_groups(names), out_dir, RunOptions(measure_readings), partial)
     except BaseException:                 # a Ctrl-C, a worker killed: record what finished, if anything
-        finished = [name for name in names if run_id and _written_by(out_dir, name, run_id)]
-        if finished:
-            with _interrupt_deferred():
+        with _interrupt_deferred():
+            if run_id:                    # (a Ctrl-C may have cut its removal short)
+                shutil.rmtree(out_dir / run_id, ignore_errors=True)
+            finished = [name for name in names if run_id and _written_by(out_dir, name, run_id)]
+            if finished:
                 record(out_dir, command, finished, started,
-                       f"The latest reproduce run did not finish (stopped after {time.perf_counter() - start:.2f} s): "
-                       f"it wrote {len(finished)} of its {len(names)} scenes ({', '.join(finished)}); the others are "
-                       "as they were before it.")
+                       f"The latest reproduce run was stopped after {time.perf_counter() - start:.2f} s, before its "
+                       f"end: it wrote {len(finished)} of its {len(names)} scenes ({', '.join(finished)})"
+                       + ("." if len(finished) == len(names) else "; the others are as they were before it."))
         raise
     done = [results[name] for name in names]
     failures = [f"{item.scene}: {failure}" for item in done for failure in item.failures]

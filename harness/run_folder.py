@@ -125,9 +125,11 @@ def partial(out_dir: Path):
     try:
         yield folder
     finally:
-        shutil.rmtree(folder, ignore_errors=True)
-        if handle is not None:
-            handle.close()
+        try:
+            shutil.rmtree(folder, ignore_errors=True)
+        finally:
+            if handle is not None:
+                handle.close()
 
 
 def unfinished(out_dir: Path) -> tuple[list[str], list[str]]:

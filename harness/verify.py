@@ -36,7 +36,6 @@ scenes the reference (written whole into a new folder and renamed into place).
 from __future__ import annotations
 
 import io
-import json
 import lzma
 import math
 import os
@@ -50,7 +49,7 @@ import pandas as pd
 
 from . import run_folder
 from .compare_runs import is_timing
-from .manifest import ENVIRONMENT, FILE as MANIFEST, FORMAT, command_line
+from .manifest import ENVIRONMENT, FILE as MANIFEST, ManifestError, command_line, load as load_record
 from .scene import Outcome
 from .trail import printed_digits
 
@@ -163,19 +162,12 @@ def compare_frames(name: str, ref: pd.DataFrame, run: pd.DataFrame, allowed: flo
 
 
 def load_manifest(folder: Path, what: str) -> dict | None:
-    """A folder's manifest.json (None if there is none); ``VerifyError`` if it cannot be read or
-    is of a format this version does not read (its set-up's fields are compared as they are)."""
-    path = Path(folder) / MANIFEST
-    if not path.exists():
-        return None
+    """A folder's manifest.json (None if there is none); ``VerifyError`` if it cannot be read, is
+    damaged or is of a format this version does not read (``manifest.load``)."""
     try:
-        data = json.loads(path.read_text())
-    except (OSError, ValueError) as exc:
-        raise VerifyError(f"the {what}'s {path} cannot be read: {exc}") from exc
-    if not isinstance(data, dict) or data.get("format") != FORMAT:
-        raise VerifyError(f"the {what}'s {path} is of manifest format {data.get('format') if isinstance(data, dict) else '?'!r}; "
-                          f"this linkrepro reads format {FORMAT}")
-    return data
+        return load_record(folder)
+    except ManifestError as exc:
+        raise VerifyError(f"the {what}'s {exc}") from exc
 
 
 def manifest_differences(ref: dict | None, run: dict | None) -> dict[str, tuple]:
@@ -277,7 +269,8 @@ def describe(verdict: Verdict) -> str:
             size = "" if math.isnan(units) else (f" ({units:.3g} units)" if math.isfinite(units) else " (not a number)")
             lines.append(f"  row {row + 1}, {column}: reference {ref!r}, run {run!r}{size}")
     lines += [f"note: {note}" for note in verdict.notes]
-    lines.append(f"{len(verdict.files)} CSVs, {sum(total.values())} cells: {total['identical']} identical, "
+    compared = sum(not f.problem for f in verdict.files)
+    lines.append(f"{compared} CSVs compared, {sum(total.values())} cells: {total['identical']} identical, "
                  f"{total['within']} within the policy, {total['moved']} moved, {total['status_changed']} status "
                  f"changed: {'FAILED' if verdict.failed else 'ok'}")
     return "\n".join(lines)
