@@ -1,7 +1,8 @@
 """The fuzz's damaged run folders: a small real run folder, damaged, then verified and reported.
 
-``damaged_run_folder(damage, kind, index, seed)`` copies a run folder made once per fuzz worker
-(a run of two small scenes, and a reference made of it by ``verify --refresh``), damages one
+``damaged_run_folder(damage, kind, index, seed)`` copies a run folder made once per fuzz worker,
+at its first such call (a run of two small scenes, and a reference made of it by ``verify
+--refresh``; not a warm-up: workers that never damage a folder never make it), damages one
 thing in it, then runs ``linkrepro verify`` on it (the command, as a user does) and writes its
 report.  ``kind`` is what is damaged: a scene's CSV, another of a scene's files, a scene's
 outcome.json, the manifest, a report, a scene's folder (the ``index``-th of them, modulo their
@@ -210,7 +211,6 @@ def _spec(rng: random.Random) -> Call:
 
 ENTRIES = [Entry("run_folder.damaged_run_folder", _spec, check="run_folder")]
 CHECKS = {"run_folder": _broken}
-WARM_UP = ("damaged_run_folder('none', 'csv', 0, 0)",)
 
 
 def namespace() -> dict:
