@@ -180,10 +180,16 @@ def _output_view(folder: "Folder", section: "OutputSection") -> dict:
     view = {"kind": "output", "name": section.name, "title": section.title, "present": section.present,
             "command": section.command, "html": "", "figures": []}
     if section.present:
-        text = section.markdown.read_text()
+        try:
+            text = section.markdown.read_text()
+            view["figures"] = figures(section.folder)
+        except (OSError, ValueError) as exc:        # damaged: not UTF-8, a figure that is no image
+            view["html"] = markdown_html(f"**{section.markdown.relative_to(folder.out_dir).as_posix()} or a figure "
+                                         f"beside it cannot be read ({type(exc).__name__}); "
+                                         f"{manifest.code_span(section.command)} writes it again.**")
+            return view
         body = text.split("\n", 1)[1] if text.startswith("# ") else text      # the section has its heading
         view["html"] = markdown_html(body, PurePosixPath(section.folder.relative_to(folder.out_dir).as_posix()))
-        view["figures"] = figures(section.folder)
     return view
 
 

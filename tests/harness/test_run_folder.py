@@ -254,3 +254,17 @@ def test_the_report_says_what_is_not_whole(two_scenes, tmp_path):
     assert "killed before it finished rahman1996-table5_7" in md
     page = (out / "report.html").read_text()
     assert "incomplete: rahman1996-table5_2/" in page and "killed before it finished rahman1996-table5_7" in page
+
+
+def test_a_command_s_damaged_output_is_said_not_a_traceback(tmp_path):
+    """The bench's markdown not UTF-8, or a figure beside it that is no image: the report is
+    written and says it cannot be read."""
+    out = tmp_path / "out"
+    (out / "bench").mkdir(parents=True)
+    (out / "bench" / "bench.md").write_bytes(b"# Bench\n\xff\xfe\n")
+    report_folder.write(out)
+    assert "bench/bench.md or a figure beside it cannot be read (UnicodeDecodeError)" in (out / "report.html").read_text()
+    (out / "bench" / "bench.md").write_text("# Bench\n\nfine\n")
+    (out / "bench" / "bench.png").write_bytes(b"\x89PNG\r\n\x1a\n cut short")
+    report_folder.write(out)
+    assert "cannot be read (UnidentifiedImageError)" in (out / "report.html").read_text()
