@@ -2,7 +2,8 @@
 
 Exit status: 0 done; 1 a run failed (an engine could not run, gfortran missing or broken, an
 output file could not be written); 2 a usage error, as argparse (a bad argument, an unknown
-scene, an ``--out`` that cannot be written); 130 interrupted (Ctrl-C).
+scene, an ``--out`` that cannot be written); 130 interrupted (Ctrl-C: a run records the scenes
+it finished first, ``harness/run_folder.py``).
 
 A user's mistake or a missing tool is one line on stderr, ``linkrepro: error: ...``, raised as
 a typed error where it is found and caught here, in ``main``.  Anything else is a bug in

@@ -5,7 +5,6 @@ import ctypes
 import gc
 import multiprocessing
 import os
-import shutil
 import signal
 import tempfile
 import threading
@@ -226,8 +225,7 @@ def reproduce(names: list[str] | None, out_dir: Path, measure_readings: bool = T
             results = _run_groups(_groups(names), out_dir, RunOptions(measure_readings), partial)
     except BaseException:                 # a Ctrl-C, a worker killed: record what finished, if anything
         with _interrupt_deferred():
-            if run_id:                    # (a Ctrl-C may have cut its removal short)
-                shutil.rmtree(out_dir / run_id, ignore_errors=True)
+            run_folder.remove_own_partials(out_dir)
             finished = [name for name in names if run_id and _written_by(out_dir, name, run_id)]
             if finished:
                 record(out_dir, command, finished, started,

@@ -132,12 +132,22 @@ def partial(out_dir: Path):
                 handle.close()
 
 
+def remove_own_partials(out_dir: Path) -> None:
+    """Remove this process's partial folders in ``out_dir`` (a Ctrl-C may have cut their making
+    or their removal short)."""
+    for folder in Path(out_dir).glob(f"{PARTIAL}{os.getpid()}-*"):
+        shutil.rmtree(folder, ignore_errors=True)
+
+
 def unfinished(out_dir: Path) -> tuple[list[str], list[str]]:
     """The scenes that partial folders in ``out_dir`` hold: (those of runs that were killed,
     those of runs still going)."""
     killed, running = [], []
     for folder in _partials(out_dir):
-        names = sorted(p.name for p in folder.iterdir() if p.is_dir())
+        try:
+            names = sorted(p.name for p in folder.iterdir() if p.is_dir())
+        except OSError:                  # removed meanwhile: its run has just ended
+            continue
         (killed if _owner_gone(folder) else running).extend(names)
     return killed, running
 
