@@ -2,7 +2,8 @@
 
 Exit status: 0 done; 1 a run failed (an engine could not run, gfortran missing or broken, an
 output file could not be written); 2 a usage error, as argparse (a bad argument, an unknown
-scene, an ``--out`` that cannot be written); 130 interrupted (Ctrl-C).
+scene, an ``--out`` that cannot be written); 130 interrupted (Ctrl-C: a run records the scenes
+it finished first, ``harness/run_folder.py``).
 
 A user's mistake or a missing tool is one line on stderr, ``linkrepro: error: ...``, raised as
 a typed error where it is found and caught here, in ``main``.  Anything else is a bug in
@@ -178,7 +179,7 @@ def _reproduce(args: argparse.Namespace, parser: _Parser) -> int:
             parser.error("--without leaves no scene to run")
     from .engines import PrintedProgramError
     from .readings import CompilerError
-    from .run import OutputFolderError, RunFailedError, reproduce
+    from .run import OutputFolderError, RunFailedError, WorkerDiedError, reproduce
     try:
         done = reproduce(args.scenes, args.out, measure_readings=not args.skip_readings, command=args.line)
     except OutputFolderError as exc:          # found before the run: the --out argument is wrong
@@ -188,7 +189,7 @@ def _reproduce(args: argparse.Namespace, parser: _Parser) -> int:
         _summary(exc.done, args.out)
         _error(str(exc))
         return 1
-    except (CompilerError, PrintedProgramError) as exc:
+    except (CompilerError, PrintedProgramError, WorkerDiedError) as exc:
         _error(str(exc))
         return 1
     except OSError as exc:
@@ -211,14 +212,15 @@ def _explain(args: argparse.Namespace, parser: _Parser) -> int:
             parser.error(f"scene {args.scene!r} has no published table to explain; table scenes: {', '.join(known)}")
         parser.error(_unknown_scenes([args.scene], known))
     from .engines import PrintedProgramError
+    from .manifest import command_line
     from .trail import CellNotFound, as_text, cell_trail, read_diff
     scene = TABLES[args.scene]
     ran = args.out / scene.name / "diff.csv"
     if not args.run and not ran.is_file():
         why = ("does not exist" if not args.out.exists() else "is not a folder" if not args.out.is_dir()
                else f"holds no run of {scene.name} (no {ran.relative_to(args.out)})")
-        parser.error(f"--out {args.out} {why}: `linkrepro reproduce {scene.name} --out {args.out}` runs it, "
-                     "or add --run to run its engines now")
+        parser.error(f"--out {args.out} {why}: `{command_line(['reproduce', scene.name, '--out', str(args.out)])}` "
+                     "runs it, or add --run to run its engines now")
     try:
         diff = read_diff(scene, args.out if ran.is_file() else None)
         text = as_text(cell_trail(scene, args.row, args.column, diff))
@@ -377,12 +379,14 @@ def _report_of_parent(out: Path, folder: str) -> int:
     else say where the output is.  A failed write, status 1."""
     from .manifest import include
     from .report_folder import write
+    from .run_folder import locked
     if out.name != folder:
         _out(f"written: {out} (a report shows it when it is a report folder's {folder}/)")
         return 0
     try:
-        include(out.parent, out)
-        write(out.parent)
+        with locked(out.parent):
+            include(out.parent, out)
+            write(out.parent)
     except OSError as exc:
         _error(f"could not write {exc.filename}: {exc.strerror or exc}")
         return 1

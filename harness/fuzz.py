@@ -2,7 +2,8 @@
 
 Each thesis gives its entry points in ``harness/scenes/<thesis>/fuzz.py`` (``ENTRIES``,
 ``namespace()``, and where it has them ``SCRUBS``, ``CHECKS``, ``WARM_UP``), found through the
-scene registry; ``harness/fuzz_calls.py`` generates the calls (valid values to the edges of the
+scene registry; the harness gives its own the same way (``harness/fuzz_folders.py``: damaged
+run folders, verified and reported); ``harness/fuzz_calls.py`` generates the calls (valid values to the edges of the
 domain, hostile values in their place), ``harness/fuzz_runner.py`` runs them in worker
 processes and classifies each outcome (ok, typed, or a finding: untyped, nan, angle,
 accepted, violated, crash, hang).
@@ -25,6 +26,7 @@ import time
 import warnings
 from typing import Callable
 
+from . import fuzz_folders
 from .fuzz_calls import generate as generate_calls, rand, spd
 from .fuzz_runner import Context, Report, format_report, nonfinite, run as run_calls, write_report
 from .progress import Bar
@@ -34,9 +36,14 @@ from .scenes import hook_modules
 CONTEXT = f"{__name__}:context"
 
 
+def parts() -> list:
+    """Each thesis's fuzz module, and the harness's own (``fuzz_folders``)."""
+    return [*hook_modules("fuzz"), fuzz_folders]
+
+
 def entries() -> list:
-    """Every thesis's entry points."""
-    return [entry for part in hook_modules("fuzz") for entry in part.ENTRIES]
+    """Every entry point: the theses' and the harness's."""
+    return [entry for part in parts() for entry in part.ENTRIES]
 
 
 def context() -> Context:
@@ -50,7 +57,7 @@ def context() -> Context:
              **{name: getattr(errors, name) for name in ("AssemblyError", "ConvergenceError", "LinkageError",
                                                           "QPError", "SingularPositionError")}}
     inputs, quirks, scrubs, checks, warm = [], [], {}, {}, []
-    for part in hook_modules("fuzz"):
+    for part in parts():
         own = dict(part.namespace())
         inputs += own.pop("inputs", ())
         quirks += own.pop("quirks", ())

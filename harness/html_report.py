@@ -180,10 +180,16 @@ def _output_view(folder: "Folder", section: "OutputSection") -> dict:
     view = {"kind": "output", "name": section.name, "title": section.title, "present": section.present,
             "command": section.command, "html": "", "figures": []}
     if section.present:
-        text = section.markdown.read_text()
+        try:
+            text = section.markdown.read_text()
+            view["figures"] = figures(section.folder)
+        except (OSError, ValueError) as exc:        # damaged: not UTF-8, a figure that is no image
+            view["html"] = markdown_html(f"**{section.markdown.relative_to(folder.out_dir).as_posix()} or a figure "
+                                         f"beside it cannot be read ({type(exc).__name__}); "
+                                         f"{manifest.code_span(section.command)} writes it again.**")
+            return view
         body = text.split("\n", 1)[1] if text.startswith("# ") else text      # the section has its heading
         view["html"] = markdown_html(body, PurePosixPath(section.folder.relative_to(folder.out_dir).as_posix()))
-        view["figures"] = figures(section.folder)
     return view
 
 
@@ -191,8 +197,9 @@ class PageSizeWarning(UserWarning):
     """report.html is larger than ``PAGE_BUDGET``; it is still written."""
 
 
-def render(folder: "Folder") -> str:
-    """The page's HTML over what ``folder`` holds (``report_folder.collect``)."""
+def render(folder: "Folder", latest: str = "") -> str:
+    """The page's HTML over what ``folder`` holds (``report_folder.collect``); ``latest``: a line
+    on the run that just ended."""
     register = register_mod.load()
     blocks: dict[tuple, str] = {}
     cells: dict[str, dict] = {}
@@ -205,7 +212,8 @@ def render(folder: "Folder") -> str:
     env = jinja2.Environment(loader=jinja2.FileSystemLoader(TEMPLATES), autoescape=True,
                              undefined=jinja2.StrictUndefined, trim_blocks=True, lstrip_blocks=True)
     return env.get_template("report.html.j2").render(
-        sections=sections, absent=folder.absent, out_dir=str(folder.out_dir), engines=ENGINES,
+        sections=sections, absent=folder.absent, absent_command=folder.absent_command, latest=latest,
+        notes=folder.notes, engines=ENGINES,
         statuses=CELL_STATUSES, columns=[(c, heading(c)) for c in COUNT_COLUMNS if c not in EXPLAINED_BY or c in kinds],
         kinds=kinds, total=headline(totals, by_kind=True),
         made=(manifest.TITLE, markdown_html("\n".join(manifest.summary(folder.out_dir)))),

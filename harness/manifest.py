@@ -6,7 +6,9 @@ shows it under "How this run was made" (``summary``).  A command that writes a r
 subfolder (``out/bench``) enters its record into that folder's manifest too (``include``).
 A run into a folder that has one keeps what it says of the other sections (the scenes not run
 this time, a command's output): the manifest is read, merged and written whole or not at all
-(a temporary file renamed).
+(a temporary file renamed), under the folder's lock (``run_folder.locked``), so that two runs
+into one folder that finish together keep each other's sections.  A manifest that cannot be
+read, lacks a field or holds one of another type is a ``ManifestError`` (``load``).
 
 Format 1: a JSON object, flat but for the last three keys (``ENVIRONMENT``: the keys that say
 with what a run ran, from ``version`` to ``inputs_sha256``):
@@ -64,6 +66,7 @@ import importlib.metadata
 import json
 import os
 import platform
+import re
 import shlex
 import shutil
 import subprocess
@@ -73,6 +76,7 @@ from pathlib import Path
 from typing import Iterable
 
 from .readings import COMPILER, FLAGS as READINGS_FLAGS
+from .run_folder import locked, replace_text, sha256
 
 FORMAT = 1
 FILE = "manifest.json"
@@ -101,11 +105,6 @@ class ManifestError(ValueError):
 def now() -> str:
     """The time now, UTC, ISO 8601 to the second (a run's ``started``)."""
     return datetime.now(timezone.utc).isoformat(timespec="seconds")
-
-
-def sha256(path: Path) -> str:
-    with open(path, "rb") as handle:
-        return hashlib.file_digest(handle, "sha256").hexdigest()
 
 
 def _files(folder: Path, pattern: str) -> list[Path]:
@@ -218,9 +217,38 @@ def environment(inputs: dict[str, str]) -> dict:
     return fields
 
 
+#: the fields that hold a list of strings, a mapping, a value or None (the others hold a string)
+_LISTS = ("build_fortran_args", "flags_f2py_extension", "flags_printed_programs", "flags_readings", "scenes")
+_MAPS = ("inputs", "outputs", "sections")
+_OR_NONE = {"dirty": bool, "cpu_count": int}
+
+
+def _damage(data: dict) -> str:
+    """What in a manifest of this format is not as ``write`` writes it (a field missing or of
+    another type), or ''."""
+    for key in KEYS[1:]:
+        if key not in data:
+            return f"it has no field {key!r}"
+        value = data[key]
+        if key in _LISTS:
+            fits = isinstance(value, list) and all(isinstance(v, str) for v in value)
+        elif key in _MAPS:
+            fits = isinstance(value, dict) and all(isinstance(v, dict if key == "sections" else str)
+                                                   for v in value.values())
+        else:
+            fits = isinstance(value, (_OR_NONE[key], type(None)) if key in _OR_NONE else str)
+        if not fits:
+            return f"its field {key!r} is {value!r:.80}"
+    for name, section in data["sections"].items():
+        if not (isinstance(section.get("folder"), str) and isinstance(section.get("differs"), dict)
+                and all(isinstance(section.get(k), (str, type(None))) for k in ("started", "command"))):
+            return f"its section {name!r} is {section!r:.80}"
+    return ""
+
+
 def load(out_dir: Path) -> dict | None:
     """``out_dir``'s manifest (None where there is none); ``ManifestError`` where it cannot be
-    read or is of another format."""
+    read, is of another format or is damaged (``_damage``)."""
     path = Path(out_dir) / FILE
     try:
         data = json.loads(path.read_text())
@@ -231,6 +259,9 @@ def load(out_dir: Path) -> dict | None:
     if not isinstance(data, dict) or data.get("format") != FORMAT:
         found = data.get("format") if isinstance(data, dict) else None
         raise ManifestError(f"{path} is of manifest format {found!r}; this linkrepro writes format {FORMAT}")
+    damage = _damage(data)
+    if damage:
+        raise ManifestError(f"{path} is damaged: {damage}")
     return data
 
 
@@ -252,29 +283,31 @@ def _merge(out_dir: Path, run: dict, inputs: dict[str, str], written: dict[str, 
     """Write ``out_dir``'s manifest: ``run`` (``ENVIRONMENT``, started, command, scenes) at the
     top, ``written`` ({section: folder}) its sections, the others kept from the last one."""
     out_dir = Path(out_dir)
-    try:
-        old = load(out_dir)
-    except ManifestError:
-        old = None                          # damaged or of another format: what it said is lost
-    sections = {name: {"folder": folder, "started": run["started"], "command": run["command"], "differs": {}}
-                for name, folder in written.items()}
-    sections.update(_earlier_sections(old, run, out_dir, written))
-    manifest = {"format": FORMAT, **{k: run[k] for k in ENVIRONMENT}, "started": run["started"],
-                "command": run["command"], "scenes": list(run["scenes"]), "inputs": inputs,
-                "outputs": output_hashes(out_dir), "sections": dict(sorted(sections.items()))}
-    path = out_dir / FILE
-    temporary = path.with_name(f".{FILE}.{os.getpid()}.tmp")
-    try:
-        temporary.write_text(json.dumps(manifest, indent=1) + "\n")
-        os.replace(temporary, path)
-    finally:
-        temporary.unlink(missing_ok=True)
-    return path
+    with locked(out_dir):                   # read, merged and replaced by one writer at a time
+        try:
+            old = load(out_dir)
+        except ManifestError:
+            old = None                      # damaged or of another format: what it said is lost
+        sections = {name: {"folder": folder, "started": run["started"], "command": run["command"], "differs": {}}
+                    for name, folder in written.items()}
+        sections.update(_earlier_sections(old, run, out_dir, written))
+        manifest = {"format": FORMAT, **{k: run[k] for k in ENVIRONMENT}, "started": run["started"],
+                    "command": run["command"], "scenes": list(run["scenes"]), "inputs": inputs,
+                    "outputs": output_hashes(out_dir), "sections": dict(sorted(sections.items()))}
+        replace_text(out_dir / FILE, json.dumps(manifest, indent=1) + "\n")
+    return out_dir / FILE
 
 
 def command_line(argv: Iterable[str]) -> str:
-    """``linkrepro`` and its arguments as a shell would take them."""
+    """``linkrepro`` and its arguments as a shell would take them (each quoted where it must be)."""
     return shlex.join(["linkrepro", *argv])
+
+
+def code_span(text: str) -> str:
+    """``text`` as a markdown code span, whatever backticks it holds."""
+    fence = "`" * (max((len(run) for run in re.findall("`+", text)), default=0) + 1)
+    pad = " " if text.startswith("`") or text.endswith("`") else ""
+    return f"{fence}{pad}{text}{pad}{fence}"
 
 
 def write(out_dir: Path, command: str, scenes: Iterable[str] = (), outputs: Iterable[str] = (),
@@ -350,7 +383,7 @@ def summary(out_dir: Path) -> list[str]:
     commit_text = "unknown" if m["commit"] == "unknown" else f"{m['commit'][:12]} ({state}; read from the {m['commit_from']})"
     libraries = ", ".join(f"{name} {m[name]}" for name in LIBRARIES)
     scenes = len(m["scenes"])
-    lines = [f"The latest run: `{m['command']}`, started {m['started']}, wrote {scenes} section{'s' * (scenes != 1)}. "
+    lines = [f"The latest run: {code_span(m['command'])}, started {m['started']}, wrote {scenes} section{'s' * (scenes != 1)}. "
              f"[{FILE}]({FILE}) has every field, with the SHA-256 of every input and output CSV.", "",
              f"- linkrepro {m['version']}, commit {commit_text}",
              f"- Python {m['python']}; {libraries}; meson-python {m['meson_python']}",
@@ -374,5 +407,5 @@ def summary(out_dir: Path) -> list[str]:
         changed = json.loads(differs)
         how = ("the same set-up" if not changed else "differing in " +
                "; ".join(f"{k} {_short(k, v)}" for k, v in changed.items()))
-        lines += [f"Run earlier: {', '.join(names)}, by `{command}` started {started} ({how}).", ""]
+        lines += [f"Run earlier: {', '.join(names)}, by {code_span(str(command))} started {started} ({how}).", ""]
     return lines

@@ -6,20 +6,23 @@ bench and each thesis's own commands leave their markdown in their folder (``ben
 theses (each thesis's scenes as it lists them, then its commands' outputs; the bench last), and
 names what is not there with the command that writes it (``linkrepro differential`` writes
 ``differential/differential.md``, shown before the bench).  ``write`` writes both reports from
-that, each whole or not at all (a temporary file renamed), so a run of one scene updates its
-section and keeps the others, and a report that cannot be built leaves the last one in place.
-Both end with "How this run was made", from the folder's manifest.json (``manifest.summary``).
+that, each whole or not at all (a temporary file renamed), under the folder's lock
+(``run_folder.locked``), so a run of one scene updates its section and keeps the others, and a
+report that cannot be built leaves the last one in place.  A scene's folder that is not what its
+run wrote (``run_folder.read_scene``: incomplete, damaged) is said in its section instead of
+shown; a folder holding an unknown scene's outcome, and a run killed or still running in the
+folder, are said at the top.  Both end with "How this run was made", from the folder's
+manifest.json (``manifest.summary``).
 """
 from __future__ import annotations
 
-import os
 import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
 
 import pandas as pd
 
-from . import manifest
+from . import manifest, run_folder
 from .diff import headline, total_counts
 from .report import COUNTS_WORDS
 from .scene import Outcome
@@ -36,7 +39,7 @@ class SceneSection:
     name: str
     title: str
     outcome: Outcome | None
-    problem: str = ""                   # '' or why outcome.json could not be read
+    problem: str = ""                   # '' or why the folder is not what its run wrote (run_folder.read_scene)
 
 
 @dataclass(frozen=True)
@@ -60,10 +63,16 @@ class Folder:
     out_dir: Path
     sections: list                      # SceneSection (run or unreadable) and OutputSection
     absent: list[SceneSection] = field(default_factory=list)     # scenes not run into it
+    notes: list[str] = field(default_factory=list)               # what else it holds: runs killed, ...
 
     @property
     def outcomes(self) -> list[Outcome]:
         return [s.outcome for s in self.sections if isinstance(s, SceneSection) and s.outcome is not None]
+
+    @property
+    def absent_command(self) -> str:
+        """The command that runs a scene into the folder, as a shell takes it (NAME for the scene)."""
+        return manifest.command_line(["reproduce", "NAME", "--out", str(self.out_dir)])
 
     def cell_totals(self) -> pd.Series:
         """Every table scene's cells over every engine (``diff.total_counts``)."""
@@ -73,30 +82,44 @@ class Folder:
 def _bench(out_dir: Path) -> OutputSection:
     folder = out_dir / "bench"
     return OutputSection("bench", "Speed against error (linkrepro bench)", folder, folder / "bench.md",
-                         f"linkrepro bench --out {folder}")
+                         manifest.command_line(["bench", "--out", str(folder)]))
 
 
 def _differential(out_dir: Path) -> OutputSection:
     folder = out_dir / "differential"
     return OutputSection("differential", "Legacy against the port on sampled geometries (linkrepro differential)",
                          folder, folder / "differential.md",
-                         f"linkrepro differential ali1977 rahman1996 rahman1991 --out {folder}")
+                         manifest.command_line(["differential", "ali1977", "rahman1996", "rahman1991", "--out", str(folder)]))
 
 
 def _command(out_dir: Path, command) -> OutputSection:
     folder = out_dir / command.default_out.name
     return OutputSection(command.default_out.name, command.report_title, folder, folder / command.report_markdown,
-                         f"linkrepro {command.name} --out {folder}")
+                         manifest.command_line([command.name, "--out", str(folder)]))
 
 
 def _scene_section(out_dir: Path, name: str) -> SceneSection:
-    scene = SCENES[name]
-    try:
-        return SceneSection(name, scene.title, Outcome.load(out_dir, name))
-    except FileNotFoundError:
-        return SceneSection(name, scene.title, None)
-    except ValueError as exc:
-        return SceneSection(name, scene.title, None, str(exc))
+    return SceneSection(name, SCENES[name].title, *run_folder.read_scene(out_dir, name))
+
+
+def _notes(out_dir: Path) -> list[str]:
+    """What the report says of the folder besides its sections: folders holding the outcome of
+    a scene this linkrepro does not know, runs killed before they finished, runs going on."""
+    notes = []
+    unknown = sorted(p.parent.name for p in out_dir.glob(f"*/{Outcome.FILE}")
+                     if p.parent.name not in SCENES and not p.parent.name.startswith("."))
+    if unknown:
+        notes.append(f"Not shown: {', '.join(unknown)} (a folder holding {Outcome.FILE} but no scene of this "
+                     "linkrepro: renamed?).")
+    killed, running = run_folder.unfinished(out_dir)
+    if killed:
+        notes.append(f"A run into this folder was killed before it finished {', '.join(killed)}: their sections are as "
+                     "the runs before it left them (its partial files are hidden in the folder; the next run removes "
+                     "them).")
+    if running:
+        notes.append(f"A run is writing {', '.join(running)} into this folder now: this report shows them as they were "
+                     "before it.")
+    return notes
 
 
 def collect(out_dir: Path) -> Folder:
@@ -109,7 +132,7 @@ def collect(out_dir: Path) -> Folder:
             section = _scene_section(out_dir, scene.name)
             (sections if section.outcome is not None or section.problem else absent).append(section)
         sections += [_command(out_dir, command) for command in commands_of(thesis) if command.report_markdown]
-    return Folder(out_dir, sections + [_differential(out_dir), _bench(out_dir)], absent)
+    return Folder(out_dir, sections + [_differential(out_dir), _bench(out_dir)], absent, _notes(out_dir))
 
 
 def _scene_lines(section: SceneSection) -> list[str]:
@@ -125,7 +148,7 @@ def _scene_lines(section: SceneSection) -> list[str]:
 def _output_lines(section: OutputSection, out_dir: Path) -> list[str]:
     if section.present:
         return [f"## [{section.title}]({section.markdown.relative_to(out_dir).as_posix()})", ""]
-    return [f"## {section.title}", "", f"Not in this folder: `{section.command}` writes it.", ""]
+    return [f"## {section.title}", "", f"Not in this folder: {manifest.code_span(section.command)} writes it.", ""]
 
 
 def markdown(folder: Folder, latest: str = "") -> str:
@@ -137,6 +160,7 @@ def markdown(folder: Folder, latest: str = "") -> str:
              "harness/deviations.toml.", ""]
     if latest:
         lines += [latest, ""]
+    lines += [f"**{note}**\n" for note in folder.notes]
     for section in folder.sections:
         lines += _scene_lines(section) if isinstance(section, SceneSection) else _output_lines(section, folder.out_dir)
     failures = [f"{o.scene}: {f}" for o in folder.outcomes for f in o.failures]
@@ -144,30 +168,22 @@ def markdown(folder: Folder, latest: str = "") -> str:
         lines += ["## Failures", "", *[f"- **{failure}**" for failure in failures], ""]
     if folder.absent:
         lines += ["## Not run into this folder", "",
-                  f"`linkrepro reproduce NAME --out {folder.out_dir}` runs one: "
+                  f"{manifest.code_span(folder.absent_command)} runs one: "
                   + ", ".join(s.name for s in folder.absent) + ".", ""]
     lines += [f"## {manifest.TITLE}", "", *manifest.summary(folder.out_dir)]
     return "\n".join(lines) + "\n"
 
 
-def _replace(path: Path, text: str) -> None:
-    temporary = path.with_name(f".{path.name}.{os.getpid()}.tmp")
-    try:
-        temporary.write_text(text)
-        os.replace(temporary, path)
-    finally:
-        temporary.unlink(missing_ok=True)
-
-
 def write(out_dir: Path, latest: str = "") -> Path:
     """Write ``out_dir/report.md`` and ``report.html`` over what the folder holds (``latest``: a
-    line on the run that just ended); returns report.html's path."""
+    line on the run that just ended), under the folder's lock; returns report.html's path."""
     from . import html_report
     out_dir = Path(out_dir)
-    folder = collect(out_dir)
-    page = html_report.render(folder)
-    _replace(out_dir / "report.md", markdown(folder, latest))
-    _replace(out_dir / "report.html", page)
+    with run_folder.locked(out_dir):
+        folder = collect(out_dir)
+        page = html_report.render(folder, latest)
+        run_folder.replace_text(out_dir / "report.md", markdown(folder, latest))
+        run_folder.replace_text(out_dir / "report.html", page)
     size = len(page.encode())
     if size > html_report.PAGE_BUDGET:
         warnings.warn(f"{out_dir / 'report.html'} is {size / 1e6:.2f} MB, over the page's budget of "

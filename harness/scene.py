@@ -48,8 +48,11 @@ class SceneSkipped(Exception):
 class Outcome:
     """What a scene's run gives the run's report: markdown lines under its heading, its wall
     time (s), the cells per engine (table scenes: ``diff.count_cells``), what could not run,
-    when it finished (UTC, ISO 8601), why it did not run where it was skipped (``SceneSkipped``).  Kept in the scene's folder as ``outcome.json``
-    (``save``, ``load``), so that the folder's report shows every scene run into it."""
+    when it finished (UTC, ISO 8601), why it did not run where it was skipped (``SceneSkipped``),
+    the files it wrote ({path in its folder: SHA-256}; None where not recorded, as by versions
+    before it was) and the run that wrote it (its partial folder's name, ``harness/run_folder.py``).
+    Kept in the scene's folder as ``outcome.json`` (``save``, ``load``), so that the folder's
+    report shows every scene run into it."""
     scene: str
     title: str
     overview: list[str]
@@ -58,6 +61,8 @@ class Outcome:
     failures: list[str] = field(default_factory=list)
     finished: str = field(default_factory=lambda: datetime.now(timezone.utc).isoformat(timespec="seconds"))
     skipped: str = ""
+    files: dict[str, str] | None = None
+    run: str = ""
 
     FILE = "outcome.json"
 
@@ -67,6 +72,7 @@ class Outcome:
         path.parent.mkdir(parents=True, exist_ok=True)      # a skipped scene wrote nothing else
         record = {"scene": self.scene, "title": self.title, "overview": self.overview, "seconds": self.seconds,
                   "failures": self.failures, "finished": self.finished, "skipped": self.skipped,
+                  "files": self.files, "run": self.run,
                   "counts": None if self.counts is None else json.loads(self.counts.to_json(orient="split"))}
         temporary = path.with_name(f".{self.FILE}.{os.getpid()}")
         temporary.write_text(json.dumps(record, indent=1))
@@ -80,11 +86,14 @@ class Outcome:
         path = Path(out_dir) / scene / cls.FILE
         try:
             record = json.loads(path.read_text())
-            counts = record["counts"]
-            return cls(record["scene"], record["title"], list(record["overview"]), float(record["seconds"]),
+            counts, files = record["counts"], record.get("files")
+            if files is not None and not (isinstance(files, dict) and all(isinstance(v, str) for v in files.values())):
+                raise TypeError(f"its files are {files!r}, not {{path: SHA-256}}")
+            return cls(str(record["scene"]), record["title"], list(record["overview"]), float(record["seconds"]),
                        None if counts is None else pd.DataFrame(counts["data"], index=counts["index"],
                                                                 columns=counts["columns"]),
-                       list(record["failures"]), str(record["finished"]), str(record.get("skipped", "")))
+                       list(record["failures"]), str(record["finished"]), str(record.get("skipped", "")),
+                       files, str(record.get("run", "")))
         except FileNotFoundError:
             raise
         except (OSError, ValueError, KeyError, TypeError) as exc:

@@ -3,9 +3,10 @@
 The run of record is ``reference/`` (in the repository, installed with the package): every CSV
 of every scene of a full ``linkrepro reproduce``, xz-compressed (``<scene>/<file>.csv.xz``),
 with the run's ``manifest.json`` where it wrote one.  ``verify`` reads the scenes found in an
-output folder (those with an ``outcome.json``) and compares each of their CSVs with the
-reference's, cell by cell, as written (every engine's outputs and ``diff.csv`` in full: each
-double's shortest repr; a printed engine's, at its printed digits; summaries rounded):
+output folder (its folders that hold an ``outcome.json``, and those named as a reference scene
+that hold files) and compares each of their CSVs with the reference's, cell by cell, as written
+(every engine's outputs and ``diff.csv`` in full: each double's shortest repr; a printed
+engine's, at its printed digits; summaries rounded):
 
 - *identical*: the same text;
 - *within*: a number that differs by at most ``units`` units in the last place: ulps of a
@@ -20,9 +21,14 @@ Policy: on the same toolchain (both have a manifest, and every field of their se
 toolchains, or where a manifest is missing, a number may move by ``units`` (default 4) units in
 the last place.  A status never changes.
 Columns of measured times (a name with "seconds" or "time") are not compared.  The exit status
-of the command: 0 when every cell keeps the policy, 1 when one does not, 2 for a usage error
-(no reference, a damaged one, a manifest of another format, an output folder without the
-scenes asked for).
+of the command: 0 when every cell keeps the policy, 1 when one does not or the folder cannot be
+trusted, 2 for a usage error (no reference, a damaged one, a manifest of another format or
+damaged, an output folder without the scenes asked for).  A folder cannot be trusted (each
+said in a line) where a scene's folder is not what its run wrote (``run_folder.read_scene``:
+no outcome.json, a file changed, missing, added, unreadable), a scene's folder is not in the
+reference (renamed?), a CSV cannot be read (empty, not UTF-8, a folder, cut short), a scene
+was skipped, or nothing was compared.  A run killed before it finished, or one still running,
+in the folder is said too (the scenes it left are as before it).
 
 ``linkrepro verify --refresh`` prints the same comparison, then makes the output folder's
 scenes the reference (written whole into a new folder and renamed into place).
@@ -30,7 +36,6 @@ scenes the reference (written whole into a new folder and renamed into place).
 from __future__ import annotations
 
 import io
-import json
 import lzma
 import math
 import os
@@ -42,8 +47,9 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from . import run_folder
 from .compare_runs import is_timing
-from .manifest import ENVIRONMENT, FILE as MANIFEST, FORMAT
+from .manifest import ENVIRONMENT, FILE as MANIFEST, ManifestError, command_line, load as load_record
 from .scene import Outcome
 from .trail import printed_digits
 
@@ -51,8 +57,6 @@ REFERENCE_DIR = Path(__file__).resolve().parent.parent / "reference"
 SUFFIX = ".csv.xz"
 #: the set-up's fields that name the commit: a new commit on the same toolchain changes them
 COMMIT = ("commit", "dirty", "commit_from")
-#: the manifest formats this module reads
-FORMATS = (FORMAT,)
 STATUS_FILE, STATUS_COLUMN = "diff.csv", "status"
 EXAMPLES = 5
 #: a column whose numbers carry this many significant digits is written in full (each float's
@@ -87,16 +91,20 @@ class Verdict:
     same_toolchain: bool
     manifest_differences: dict[str, tuple]
     files: list[FileResult]
-    unchecked: list[str]
+    notes: list[str] = field(default_factory=list)       # runs killed or running in the folder
 
     @property
     def failed(self) -> list[FileResult]:
         return [f for f in self.files if f.problem or f.status_changed or f.moved]
 
 
-def scenes_in(folder: Path) -> list[str]:
-    """The scenes run into an output folder (their folders hold ``outcome.json``), sorted."""
-    return sorted(p.parent.name for p in Path(folder).glob("*/outcome.json"))
+def scenes_in(folder: Path, known: tuple[str, ...] = ()) -> list[str]:
+    """The scenes run into an output folder, sorted: its folders (none hidden) that hold
+    ``outcome.json``, and those named as a ``known`` scene that hold files."""
+    folder = Path(folder)
+    found = {p.parent.name for p in folder.glob(f"*/{Outcome.FILE}")}
+    found |= {name for name in known if (folder / name).is_dir() and any(folder.joinpath(name).iterdir())}
+    return sorted(name for name in found if not name.startswith("."))
 
 
 def reference_scenes(reference_dir: Path) -> list[str]:
@@ -154,19 +162,12 @@ def compare_frames(name: str, ref: pd.DataFrame, run: pd.DataFrame, allowed: flo
 
 
 def load_manifest(folder: Path, what: str) -> dict | None:
-    """A folder's manifest.json (None if there is none); ``VerifyError`` if it is damaged or of
-    a format this version does not read."""
-    path = Path(folder) / MANIFEST
-    if not path.exists():
-        return None
+    """A folder's manifest.json (None if there is none); ``VerifyError`` if it cannot be read, is
+    damaged or is of a format this version does not read (``manifest.load``)."""
     try:
-        data = json.loads(path.read_text())
-    except (OSError, ValueError) as exc:
-        raise VerifyError(f"the {what}'s {path} cannot be read: {exc}") from exc
-    if not isinstance(data, dict) or data.get("format") not in FORMATS:
-        raise VerifyError(f"the {what}'s {path} is of manifest format {data.get('format') if isinstance(data, dict) else '?'!r}; "
-                          f"this linkrepro reads format {', '.join(map(str, FORMATS))}")
-    return data
+        return load_record(folder)
+    except ManifestError as exc:
+        raise VerifyError(f"the {what}'s {exc}") from exc
 
 
 def manifest_differences(ref: dict | None, run: dict | None) -> dict[str, tuple]:
@@ -177,12 +178,12 @@ def manifest_differences(ref: dict | None, run: dict | None) -> dict[str, tuple]
     return {k: (ref.get(k), run.get(k)) for k in ENVIRONMENT if k not in COMMIT and ref.get(k) != run.get(k)}
 
 
-def _skipped(out_dir: Path, scene: str) -> str:
-    """Why the run skipped ``scene`` ("" where it ran)."""
+def _read_run_csv(path: Path) -> pd.DataFrame | str:
+    """A run's CSV as text cells, or why it cannot be read."""
     try:
-        return Outcome.load(out_dir, scene).skipped
-    except (FileNotFoundError, ValueError):
-        return ""
+        return read_csv_text(path.read_bytes())
+    except (OSError, ValueError) as exc:         # a folder, empty, not UTF-8, cut inside a quote
+        return f"cannot be read ({type(exc).__name__}: {(str(exc).splitlines() or [''])[0]})"
 
 
 def verify(out_dir: Path, reference_dir: Path = REFERENCE_DIR, units: float = UNITS,
@@ -192,27 +193,32 @@ def verify(out_dir: Path, reference_dir: Path = REFERENCE_DIR, units: float = UN
     if not reference_dir.is_dir() or not reference_scenes(reference_dir):
         raise VerifyError(f"no reference at {reference_dir} (a folder of <scene>/<file>{SUFFIX}); "
                           "`linkrepro verify --refresh --reference DIR` makes one from a run")
-    found = scenes_in(out_dir)
+    known = reference_scenes(reference_dir)
+    found = scenes_in(out_dir, tuple(known))
     if scenes:
         missing = [s for s in scenes if s not in found]
         if missing:
             raise VerifyError(f"{out_dir} holds no run of {', '.join(missing)}: "
-                              f"`linkrepro reproduce {' '.join(missing)} --out {out_dir}` runs them")
+                              f"`{command_line(['reproduce', *missing, '--out', str(out_dir)])}` runs them")
         found = list(scenes)
     if not found:
-        raise VerifyError(f"{out_dir} holds no scene run (no <scene>/outcome.json): `linkrepro reproduce --out {out_dir}`")
+        raise VerifyError(f"{out_dir} holds no scene run (no <scene>/outcome.json): "
+                          f"`{command_line(['reproduce', '--out', str(out_dir)])}`")
     manifests = load_manifest(reference_dir, "reference"), load_manifest(out_dir, "run")
     differences = manifest_differences(*manifests)
     same = not differences and None not in manifests
-    files, unchecked = [], []
-    known = set(reference_scenes(reference_dir))
+    files = []
     for scene in found:
         if scene not in known:
-            unchecked.append(scene)
+            files.append(FileResult(scene, problem="not in the reference: a scene folder verify does not know "
+                                                   "(renamed? a scene the reference lacks?)"))
             continue
-        skipped = _skipped(out_dir, scene)
-        if skipped:
-            files.append(FileResult(scene, problem=f"skipped in the run: {skipped}"))
+        outcome, why = run_folder.read_scene(out_dir, scene)
+        if outcome is None:
+            files.append(FileResult(scene, problem=why))
+            continue
+        if outcome.skipped:
+            files.append(FileResult(scene, problem=f"skipped in the run: {outcome.skipped}"))
             continue
         for stored in sorted((reference_dir / scene).glob(f"*{SUFFIX}")):
             name = f"{scene}/{stored.name[:-len(SUFFIX)]}.csv"
@@ -224,11 +230,20 @@ def verify(out_dir: Path, reference_dir: Path = REFERENCE_DIR, units: float = UN
             if not path.exists():
                 files.append(FileResult(name, problem="missing in the run"))
                 continue
-            files.append(compare_frames(name, ref, read_csv_text(path.read_bytes()), 0.0 if same else units))
+            run = _read_run_csv(path)
+            files.append(FileResult(name, problem=run) if isinstance(run, str) else
+                         compare_frames(name, ref, run, 0.0 if same else units))
         for path in sorted((out_dir / scene).glob("*.csv")):
             if not (reference_dir / scene / (path.stem + SUFFIX)).exists():
                 files.append(FileResult(f"{scene}/{path.name}", problem="not in the reference"))
-    return Verdict(out_dir, reference_dir, units, same, differences, files, unchecked)
+    if not any(not f.problem for f in files):
+        files.append(FileResult(str(out_dir), problem="nothing was compared: no CSV of a scene the reference holds"))
+    killed, running = run_folder.unfinished(out_dir)
+    notes = ([f"a run into this folder was killed before it finished {', '.join(killed)}: as compared, they are "
+              "as the runs before it left them (its partial files are hidden in the folder; the next run removes them)"]
+             if killed else [])
+    notes += [f"a run is writing {', '.join(running)} into this folder now: verify again when it ends"] if running else []
+    return Verdict(out_dir, reference_dir, units, same, differences, files, notes)
 
 
 def describe(verdict: Verdict) -> str:
@@ -253,9 +268,9 @@ def describe(verdict: Verdict) -> str:
         for row, column, ref, run, units in f.examples:
             size = "" if math.isnan(units) else (f" ({units:.3g} units)" if math.isfinite(units) else " (not a number)")
             lines.append(f"  row {row + 1}, {column}: reference {ref!r}, run {run!r}{size}")
-    if verdict.unchecked:
-        lines.append(f"not in the reference (not compared): {', '.join(verdict.unchecked)}")
-    lines.append(f"{len(verdict.files)} CSVs, {sum(total.values())} cells: {total['identical']} identical, "
+    lines += [f"note: {note}" for note in verdict.notes]
+    compared = sum(not f.problem for f in verdict.files)
+    lines.append(f"{compared} CSVs compared, {sum(total.values())} cells: {total['identical']} identical, "
                  f"{total['within']} within the policy, {total['moved']} moved, {total['status_changed']} status "
                  f"changed: {'FAILED' if verdict.failed else 'ok'}")
     return "\n".join(lines)
@@ -264,11 +279,15 @@ def describe(verdict: Verdict) -> str:
 def refresh(out_dir: Path, reference_dir: Path = REFERENCE_DIR) -> int:
     """Make the scenes of ``out_dir`` the reference: every CSV xz-compressed, the manifest copied;
     written whole into a new folder beside ``reference_dir`` and renamed into place.  Returns
-    the bytes the reference takes."""
+    the bytes the reference takes.  ``VerifyError`` where a scene's folder is not what its run
+    wrote (``run_folder.read_scene``)."""
     out_dir, reference_dir = Path(out_dir), Path(reference_dir)
     scenes = scenes_in(out_dir)
     if not scenes:
         raise VerifyError(f"{out_dir} holds no scene run to make the reference of")
+    damaged = [f"{scene}: {why}" for scene in scenes if (why := run_folder.read_scene(out_dir, scene)[1])]
+    if damaged:
+        raise VerifyError(f"{out_dir} cannot be made the reference: {'; '.join(damaged)}")
     reference_dir.parent.mkdir(parents=True, exist_ok=True)
     fresh = Path(tempfile.mkdtemp(prefix=".reference-", dir=reference_dir.parent))
     try:

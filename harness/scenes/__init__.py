@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import importlib
 import pkgutil
+from functools import lru_cache
 
 from ..scene import Scene
 from ..table_scene import TableScene
@@ -29,7 +30,13 @@ def hook_modules(hook: str) -> list:
     ``harness/bench.py``; ``fuzz``: its entry points, ``harness/fuzz_calls.py``; ``commands``: its
     own commands, ``harness/command.py``; ``docs``: its generated blocks of the docs,
     ``harness/docs.py``; ``differential``: its samplers and engine pairs,
-    ``harness/differential.py``), where it has one."""
+    ``harness/differential.py``), where it has one; looked for once a process (each report
+    asks: a module that is not there is looked for anew at every import)."""
+    return list(_hook_modules(hook))
+
+
+@lru_cache(maxsize=None)
+def _hook_modules(hook: str) -> tuple:
     modules = []
     for thesis in THESES:
         name = f"{thesis.__name__}.{hook}"
@@ -38,7 +45,7 @@ def hook_modules(hook: str) -> list:
         except ModuleNotFoundError as err:
             if err.name != name:
                 raise
-    return modules
+    return tuple(modules)
 
 
 def differentials() -> dict:

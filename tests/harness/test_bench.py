@@ -66,7 +66,7 @@ def test_quick_bench_writes_its_three_files(tmp_path, monkeypatch):
     with contextlib.redirect_stdout(stdout), contextlib.redirect_stderr(stderr):
         status = main(["bench", "--repeat", "1", "--quick", "--out", str(out)])
     assert status == 0, stderr.getvalue()
-    assert sorted(p.name for p in out.iterdir()) == sorted([*bench.OUTPUTS, "manifest.json"])
+    assert sorted(p.name for p in out.iterdir()) == sorted([*bench.OUTPUTS, "manifest.json", ".linkrepro.lock"])
     record = json.loads((out / "manifest.json").read_text())
     assert record["command"] == f"linkrepro bench --repeat 1 --quick --out {out}" and record["scenes"] == ["bench"]
     assert list(record["outputs"]) == ["bench.csv"]

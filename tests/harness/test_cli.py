@@ -11,6 +11,7 @@ through every engine is rahman1996-table5_1 (about 3 s; `linkrepro scenes` lists
 from __future__ import annotations
 
 import contextlib
+import errno
 import io
 import os
 import signal
@@ -162,21 +163,32 @@ def test_out_without_write_permission(tmp_path):
         folder.chmod(0o700)
 
 
-def test_out_checked_before_the_run(tmp_path):
+@pytest.mark.parametrize("name", ["report.md", "manifest.json"])
+def test_out_checked_before_the_run(tmp_path, name):
     """What the run would write at the top level is checked first: no scene ran."""
     out = tmp_path / "out"
-    (out / "report.md").mkdir(parents=True)
-    error_line(run("reproduce", FAST_SCENE, "--out", str(out), cwd=tmp_path), 2, "report.md", "is a folder")
-    assert sorted(p.name for p in out.iterdir()) == ["report.md"]
+    (out / name).mkdir(parents=True)
+    error_line(run("reproduce", FAST_SCENE, "--out", str(out), cwd=tmp_path), 2, name, "is a folder")
+    assert sorted(p.name for p in out.iterdir()) == [name]
 
 
 # ------------------------------------------------------------------ failed runs: status 1
 
-def test_output_file_that_cannot_be_written_during_the_run(tmp_path):
-    blocker = tmp_path / "out" / FAST_SCENE / "published.csv"
-    blocker.mkdir(parents=True)
+def test_output_file_that_cannot_be_written_during_the_run(tmp_path, monkeypatch):
+    """A write that fails during the run (here the disk full, as a CSV is written) is one line,
+    exit 1; the scene's folder is as it was (a scene is put in place whole or not at all)."""
+    from linkrepro.harness import table_scene
+    earlier = tmp_path / "out" / FAST_SCENE / "published.csv"
+    earlier.parent.mkdir(parents=True)
+    earlier.write_text("an earlier run's\n")
+
+    def full(frame, path, *args, **kwargs):
+        raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC), str(path))
+    monkeypatch.setattr(table_scene, "write_csv", full)
     error_line(run("reproduce", FAST_SCENE, "--out", str(tmp_path / "out"), cwd=tmp_path), 1,
-               "could not write", "published.csv")
+               "could not write", FAST_SCENE, os.strerror(errno.ENOSPC))
+    assert [p.name for p in earlier.parent.iterdir()] == ["published.csv"] and earlier.read_text() == "an earlier run's\n"
+    assert not list((tmp_path / "out").glob(".linkrepro-partial-*"))
 
 
 def test_without_leaves_scenes_out(tmp_path):

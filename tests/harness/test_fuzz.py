@@ -69,3 +69,17 @@ def test_checks_flag_results_that_break_their_promise():
     ns = fuzz.namespace()
     assert fuzz_runner.arguments_of("port.ali1977.case2.case2_cognate(np.array([1.0]), quirks=port.ali1977.case2.LISTING)",
                              ns)[1]["quirks"] is ns["port"].ali1977.case2.LISTING
+
+
+def test_the_damaged_folder_check_flags_a_pass_a_traceback_and_a_report_that_shows_it():
+    """A damaged run folder (harness/fuzz_folders.py) is a finding where verify passes a damage
+    it must see, fails an undamaged folder, ends in a traceback, or the report shows the damaged
+    scene as run; not where verify fails it and the report says so."""
+    check = fuzz.context().checks["run_folder"]
+    seen = {"damage": "truncate", "target": "s/legacy.csv", "must_fail": True, "scene": "s", "raised": "",
+            "verify": 1, "verify_said": "FAILED", "report_shows": []}
+    assert check(None, seen) is None
+    assert "verify passed" in check(None, {**seen, "verify": 0})
+    assert "undamaged" in check(None, {**seen, "damage": "none", "must_fail": False, "scene": ""})
+    assert "IsADirectoryError" in check(None, {**seen, "raised": "verify: IsADirectoryError: x at verify.py:1"})
+    assert "report shows s" in check(None, {**seen, "report_shows": ["s"]})

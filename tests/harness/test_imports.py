@@ -26,7 +26,7 @@ REGISTRY = "linkrepro.harness.scenes"
 #: the registry's hook modules: a thesis's ``<thesis>/<hook>.py``, imported by name where it has one
 HOOKS = ("bench", "fuzz", "commands", "docs", "differential")
 #: the top of the harness: the commands and report writers, which may ask the registry
-TOP = {f"linkrepro.harness.{name}" for name in ("run", "cli", "html_report", "results", "bench_run", "fuzz", "docs", "report_folder")}
+TOP = {f"linkrepro.harness.{name}" for name in ("run", "cli", "html_report", "results", "bench_run", "fuzz", "fuzz_folders", "docs", "report_folder")}
 
 
 def modules() -> dict[str, tuple[Path, bool]]:

@@ -104,7 +104,7 @@ def test_an_unreadable_outcome_is_said_in_its_section(two_runs, tmp_path):
 def test_a_report_that_cannot_be_built_leaves_the_last_one(two_runs, monkeypatch):
     before = {name: (two_runs / name).read_text() for name in report_folder.FILES}
 
-    def broken(folder):
+    def broken(folder, latest):
         raise RuntimeError("the page cannot be rendered")
     monkeypatch.setattr(html_report, "render", broken)
     with pytest.raises(RuntimeError):

@@ -7,7 +7,7 @@ import pytest
 from linkrepro.harness import progress, run
 
 
-def _fake_item(name, out_dir, measure_readings):
+def _fake_item(name, out_dir, options, partial):
     if name == "boom":
         raise ZeroDivisionError("a failure inside a worker")
     return f"{name} from {out_dir}"
@@ -23,10 +23,10 @@ def fake_items(monkeypatch):
 @pytest.mark.skipif("fork" not in multiprocessing.get_all_start_methods(), reason="workers inherit the fake by fork")
 def test_groups_in_workers_give_what_they_give_in_turn(fake_items, tmp_path):
     groups = [["a", "b"], ["c"], ["d", "e"]]
-    in_workers = run._run_groups(groups, tmp_path, False)
+    in_workers = run._run_groups(groups, tmp_path, False, tmp_path)
     run.os.environ[run.IN_POOL_ENV] = "1"                    # the serial path
     try:
-        in_turn = run._run_groups(groups, tmp_path, False)
+        in_turn = run._run_groups(groups, tmp_path, False, tmp_path)
     finally:
         del run.os.environ[run.IN_POOL_ENV]
     assert in_workers == in_turn == {n: f"{n} from {tmp_path}" for n in "abcde"}
@@ -36,7 +36,7 @@ def test_groups_in_workers_give_what_they_give_in_turn(fake_items, tmp_path):
 @pytest.mark.skipif("fork" not in multiprocessing.get_all_start_methods(), reason="workers inherit the fake by fork")
 def test_a_worker_error_is_raised_here_and_no_worker_is_left(fake_items, tmp_path):
     with pytest.raises(ZeroDivisionError, match="inside a worker"):
-        run._run_groups([["a", "boom"], ["c"], ["d"]], tmp_path, False)
+        run._run_groups([["a", "boom"], ["c"], ["d"]], tmp_path, False, tmp_path)
     assert multiprocessing.active_children() == []
 
 

@@ -13,9 +13,10 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from linkrepro.harness import verify as verify_mod
+from linkrepro.harness import run_folder, verify as verify_mod
 from linkrepro.harness.cli import main
 from linkrepro.harness.run import reproduce
+from linkrepro.harness.scene import Outcome
 
 SCENES = ["rahman1996-table5_1", "ali1977-table1"]
 
@@ -43,7 +44,8 @@ def run(recorded, tmp_path) -> Path:
 
 
 def _edit(path: Path, row: int, column: str, change) -> str:
-    """Change one cell of a CSV's text (``change(text) -> text``); returns the old text."""
+    """Change one cell of a CSV's text (``change(text) -> text``), as a run that computed it so
+    would have written it (its outcome records the file); returns the old text."""
     lines = path.read_text().splitlines()
     head = lines[0].split(",")
     cells = lines[row + 1].split(",")
@@ -51,16 +53,27 @@ def _edit(path: Path, row: int, column: str, change) -> str:
     cells[head.index(column)] = change(old)
     lines[row + 1] = ",".join(cells)
     path.write_text("\n".join(lines) + "\n")
+    _as_written(path.parent)
     return old
 
 
+def _as_written(folder: Path) -> None:
+    """Record a scene folder's files in its outcome, as a run that wrote them so does."""
+    outcome = Outcome.load(folder.parent, folder.name)
+    outcome.files = run_folder.file_hashes(folder)
+    outcome.save(folder.parent)
+
+
 def _manifest(folder: Path, **fields) -> None:
-    (folder / "manifest.json").write_text(json.dumps({"format": 1, **fields}))
+    """Change fields of the folder's manifest (the run's, copied into the reference)."""
+    path = folder / "manifest.json"
+    path.write_text(json.dumps({**json.loads(path.read_text()), **fields}))
 
 
 def test_the_recorded_run_is_identical_to_its_reference(recorded):
     status, text, _ = _cli("verify", "--out", str(recorded[0]), "--reference", str(recorded[1]))
     assert status == 0 and text.rstrip().endswith("0 moved, 0 status changed: ok")
+    assert re.search(r"\n\d+ CSVs compared, ", text)
     assert {p.name for p in recorded[1].iterdir()} == {*SCENES, "manifest.json"}     # the run's manifest copied
     stored = recorded[1] / "ali1977-table1" / "legacy.csv.xz"
     assert lzma.decompress(stored.read_bytes()) == (recorded[0] / "ali1977-table1" / "legacy.csv").read_bytes()
@@ -99,6 +112,7 @@ def test_a_status_that_changes_fails_under_any_policy(recorded, run):
 def test_a_missing_or_new_csv_is_named(recorded, run):
     (run / "ali1977-table1" / "identities.csv").unlink()
     shutil.copyfile(run / "ali1977-table1" / "legacy.csv", run / "ali1977-table1" / "extra.csv")
+    _as_written(run / "ali1977-table1")
     status, text, _ = _cli("verify", "--out", str(run), "--reference", str(recorded[1]))
     assert status == 1 and "identities.csv: missing in the run" in text and "extra.csv: not in the reference" in text
 
@@ -139,3 +153,68 @@ def test_the_size_the_docs_quote_is_the_references():
     quoted = float(re.search(r"xz-compressed \(([0-9.]+) MB\)", docs.read_text()).group(1))
     size = sum(p.stat().st_size for p in verify_mod.REFERENCE_DIR.rglob("*") if p.is_file())
     assert quoted == round(size / 1e6, 1)
+
+
+def _without_record(folder: Path) -> None:
+    """The scene's outcome as versions before this one wrote it: no record of its files."""
+    record = json.loads((folder / "outcome.json").read_text())
+    del record["files"]
+    (folder / "outcome.json").write_text(json.dumps(record))
+
+
+#: damage to a recorded run, and what verify's failing line says of it
+DAMAGE = {
+    "renamed": (lambda s: s.rename(s.with_name("renamed-scene")), "renamed-scene: not in the reference"),
+    "empty": (lambda s: (s / "legacy.csv").write_bytes(b""), "changed since the run wrote it: legacy.csv"),
+    "not utf-8": (lambda s: (s / "legacy.csv").write_bytes(b"\xff\xfe\x00x\n"), "changed since the run wrote it: legacy.csv"),
+    "a folder": (lambda s: ((s / "legacy.csv").unlink(), (s / "legacy.csv").mkdir()), "missing or not a file: legacy.csv"),
+    "cut short": (lambda s: (s / "diff.csv").write_bytes((s / "diff.csv").read_bytes()[:333]),
+                  "changed since the run wrote it: diff.csv"),
+    "no outcome": (lambda s: (s / "outcome.json").unlink(), "holds files but no outcome.json"),
+    "another's outcome": (lambda s: shutil.copyfile(s.with_name("ali1977-table1") / "outcome.json", s / "outcome.json"),
+                          "is the outcome of 'ali1977-table1'"),
+    "a file added": (lambda s: (s / "notes.csv").write_text("a\n1\n"), "not written by its run: notes.csv"),
+    # an outcome of an earlier version records no files: the CSV itself is found unreadable
+    "empty, no record": (lambda s: (_without_record(s), (s / "legacy.csv").write_bytes(b"")),
+                         "legacy.csv: cannot be read (EmptyDataError"),
+    "not utf-8, no record": (lambda s: (_without_record(s), (s / "legacy.csv").write_bytes(b"a\n\xff\n")),
+                             "legacy.csv: cannot be read (UnicodeDecodeError"),
+    "a folder, no record": (lambda s: (_without_record(s), (s / "legacy.csv").unlink(), (s / "legacy.csv").mkdir()),
+                            "legacy.csv: cannot be read (IsADirectoryError"),
+    "cut short, no record": (lambda s: (_without_record(s), (s / "diff.csv").write_bytes((s / "diff.csv").read_bytes()[:333])),
+                             "diff.csv: shape or columns differ"),
+}
+
+
+@pytest.mark.parametrize("case", DAMAGE)
+def test_a_folder_that_cannot_be_trusted_fails_in_a_line(recorded, run, case):
+    """A scene folder verify does not know, a CSV it cannot read, a scene's files without the
+    outcome that says it finished, or not those its outcome records: status 1, the line says
+    which, no traceback."""
+    damage, said = DAMAGE[case]
+    scene = run / "rahman1996-table5_1"
+    damage(scene)
+    status, text, err = _cli("verify", "--out", str(run), "--reference", str(recorded[1]))
+    assert status == 1 and err == "" and text.rstrip().endswith(": FAILED"), (status, err)
+    assert any(line.startswith(("rahman1996-table5_1", "renamed-scene")) and said in line
+               for line in text.splitlines()), text
+
+
+def test_a_folder_that_compares_nothing_fails(recorded, run):
+    """Its only scene renamed: nothing is compared, and verify says so (it used to pass)."""
+    shutil.rmtree(run / "ali1977-table1")
+    (run / "rahman1996-table5_1").rename(run / "renamed-scene")
+    status, text, _ = _cli("verify", "--out", str(run), "--reference", str(recorded[1]))
+    assert status == 1 and f"{run}: nothing was compared" in text and "\n0 CSVs compared, 0 cells" in text
+
+
+def test_a_damaged_manifest_is_a_usage_error_not_a_pass(recorded, run):
+    (run / "manifest.json").write_text(json.dumps({"format": 1}))
+    status, _, err = _cli("verify", "--out", str(run), "--reference", str(recorded[1]))
+    assert status == 2 and "manifest.json is damaged: it has no field 'version'" in err and "Traceback" not in err
+
+
+def test_a_damaged_folder_is_not_made_the_reference(recorded, run, tmp_path):
+    (run / "ali1977-table1" / "legacy.csv").write_text("x\n")
+    status, _, err = _cli("verify", "--out", str(run), "--reference", str(tmp_path / "ref"), "--refresh")
+    assert status == 2 and "cannot be made the reference" in err and not (tmp_path / "ref").exists()

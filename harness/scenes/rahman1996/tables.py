@@ -17,7 +17,7 @@ from ....legacy import rahman1996
 from ....legacy.rahman1996 import CSSP_COLUMNS, INERTIA_ROWS
 from ....port.rahman1996.balance import CRANK_DEG, CsspInputs, balance
 from ....port.rahman1996.quirks import CSSP_CORRECTED, CSSP_PRINTED
-from ...engines import PrintedProgramError, run_program
+from ...engines import PrintedProgramError, program_path, run_program
 from ...listing_lines import Statement
 from ...table_scene import TableScene
 from . import readings
@@ -50,13 +50,19 @@ def legacy_tables() -> dict[str, pd.DataFrame]:
     return as_tables(rahman1996.cssp())
 
 
-@lru_cache(maxsize=1)
 def printed_run() -> dict:
-    """The printed program as a subprocess, in a fresh directory (it OPENs dint.dat NEW).
+    """The printed program as a subprocess, in a fresh directory (it OPENs dint.dat NEW);
+    kept for the process, once per program file (``$LINKREPRO_PRINTED_BIN`` pointed elsewhere
+    runs that one).
 
     Its one live per-position WRITE is ``TH1, dint`` (the input torque's percentage
     decrement, Figure 5.6); at the end it WRITEs ``I1X, NUI1X`` (Table 5.1, crank I_xx).
     """
+    return _printed_run(program_path(PROGRAM))
+
+
+@lru_cache(maxsize=2)
+def _printed_run(exe: Path) -> dict:         # exe: the cache's key (run_program finds the same)
     with tempfile.TemporaryDirectory() as tmp:
         run_program(PROGRAM, cwd=Path(tmp))
         lines = [line.split() for line in (Path(tmp) / "dint.dat").read_text().splitlines() if line.strip()]
