@@ -20,13 +20,14 @@ would alone (f2py holds the GIL during a call as well: the FORTRAN never runs tw
 from __future__ import annotations
 
 import threading
+import warnings
 
 import numpy as np
 
 from ..checks import (finite_matrix, listing_condition, masses, qp_arguments, refuse_singular_position,
                       slider_crank)
 from ..errors import ConvergenceError, QPError, SingularPositionError
-from ..port.rahman1996.qprog import MISSES_MESSAGE
+from ..port.rahman1996.qprog import answer, precision_warning
 from . import _rahman1996 as _f
 
 #: held around every call into the compiled Rahman (1996) FORTRAN (static storage, see above)
@@ -98,13 +99,15 @@ def inverse(s) -> np.ndarray:
 
 
 def qprog(h, g, a=None, b=None, neq: int = 0) -> dict:
-    """Our QPROG (IMSL's calling convention, Goldfarb-Idnani; register D050).
+    """Our QPROG (IMSL's calling convention, Goldfarb-Idnani; registers D050, D160-D163).
 
     Minimizes g'x + x'Hx/2 subject to a[:neq] x = b[:neq] and a[neq:] x >= b[neq:].
-    Returns ``sol``, ``diag`` (the multiple of the identity added to H, 0 when H is
-    positive definite), ``active`` (0-based constraint indices) and ``multipliers``; QPError
-    for inconsistent constraints, the iteration limit, a non-finite answer, or one that would
-    miss a row by more than the method's rounding (port.rahman1996.qprog's docstring).
+    Returns ``sol``, ``diag`` (0 where H is positive definite to its rounding; else the
+    multiple of I added to H, and ``regularized`` True: the answer is the regularized
+    problem's, with a ``PrecisionWarning``), ``active`` (0-based constraint indices),
+    ``multipliers`` and ``condition``; QPError for inconsistent constraints, an unbounded
+    problem, the iteration limit, a non-finite answer, or one that would miss a row by more
+    than the method's rounding.  The contract in full: port.rahman1996.qprog's ``qprog``.
     """
     h, g, a, b, neq = qp_arguments(h, g, a, b, neq, 60, 200)
     n = g.size
@@ -113,14 +116,11 @@ def qprog(h, g, a=None, b=None, neq: int = 0) -> dict:
     with FORTRAN_LOCK:
         diag, sol, nact, iact, lam = _f.dqprog(b.size, neq, a_f, b_f, g, np.asfortranarray(h))
         status = int(_f.qpstat_get())
-    if status == 1:
-        raise QPError("QPROG: the constraints are inconsistent")
-    if status == 2:
-        raise QPError("QPROG: iteration limit reached")
-    if status == 4:
-        raise QPError(MISSES_MESSAGE)
+        condition = float(_f.qpcond_get())
     if status == 3:
         raise ValueError("QPROG: bad arguments")
-    if not (np.isfinite(diag) and np.all(np.isfinite(sol)) and np.all(np.isfinite(lam[:nact]))):
-        raise QPError("QPROG: the solution or DIAG (the shift of H) is not finite (the arithmetic overflowed)")
-    return {"sol": sol, "diag": float(diag), "active": iact[:nact] - 1, "multipliers": lam[:nact]}
+    result = answer(status, diag, sol, iact[:nact] - 1, lam[:nact], condition)
+    warning = precision_warning(h, result)
+    if warning is not None:
+        warnings.warn(warning, stacklevel=2)
+    return result

@@ -7,14 +7,20 @@ C        CALL QPROG (NVAR, NCON, NEQ, A, LDA, B, G, H, LDH, DIAG, SOL,
 C                    NACT, IACT, ALAMDA)
 C
 C     MINIMIZES  G'X + X'HX/2  SUBJECT TO  A(I,.)X = B(I), I=1..NEQ,
-C     AND  A(I,.)X >= B(I), I=NEQ+1..NCON.  IF H IS NOT POSITIVE
-C     DEFINITE, H + DIAG*I IS USED, DIAG THE SMALLEST MULTIPLE FOUND BY
-C     RAISING IT PIVOT BY PIVOT IN THE CHOLESKY FACTORIZATION (D050).
-C     OUTPUT: SOL, NACT ACTIVE CONSTRAINTS IACT(1..NACT) WITH LAGRANGE
-C     MULTIPLIERS ALAMDA(1..NACT).  A STATUS IS LEFT IN COMMON /QPSTAT/:
-C     0 SOLVED, 1 CONSTRAINTS INCONSISTENT, 2 ITERATION LIMIT, 3 BAD
-C     ARGUMENTS, 4 THE SOLUTION FOUND MISSES A CONSTRAINT BY MORE THAN
-C     THE METHOD'S ROUNDING (QPSOLV'S LAST GUARD, ISSUE 22).  A SOLVED
+C     AND  A(I,.)X >= B(I), I=NEQ+1..NCON.  H IS SOLVED AS GIVEN WHERE
+C     ITS CHOLESKY FACTORIZATION HAS EVERY PIVOT AT LEAST NVAR*EPS*
+C     MAX|H(I,J)| (POSITIVE DEFINITE TO ITS ROUNDING, DIAG = 0; D160).
+C     ELSE H + DIAG*I IS USED, DIAG FOUND BY RAISING IT PIVOT BY PIVOT IN
+C     THE CHOLESKY FACTORIZATION (D050): THE ANSWER IS THEN THE
+C     REGULARIZED PROBLEM'S.  OUTPUT: SOL, NACT ACTIVE CONSTRAINTS
+C     IACT(1..NACT) WITH LAGRANGE MULTIPLIERS ALAMDA(1..NACT).  A STATUS
+C     IS LEFT IN COMMON /QPSTAT/: 0 SOLVED, 1 CONSTRAINTS INCONSISTENT,
+C     2 ITERATION LIMIT, 3 BAD ARGUMENTS, 4 THE SOLUTION FOUND MISSES A
+C     CONSTRAINT BY MORE THAN THE METHOD'S ROUNDING (QPSOLV'S LAST GUARD,
+C     ISSUE 22), 5 UNBOUNDED BELOW (D163); AND IN COMMON /QPCND/ QCOND,
+C     THE CONDITION OF THE ANSWER ON THE DIRECTIONS H DETERMINES (D160,
+C     QPCOND).  THE REAL*4 ENTRY QPROG COUNTS IN COMMON /QPWARN/ THE
+C     CALLS WHOSE ANSWER SINGLE PRECISION CANNOT CARRY (D161).  A SOLVED
 C     SOL MEETS EVERY ROW TO EPS*(1E3 + 8 KAPPA) OF |A(I,.)||SOL|+|B(I)|,
 C     KAPPA = TRACE(H+DIAG*I)*TRACE((H+DIAG*I)^-1) >= ITS CONDITION
 C     NUMBER.  ALL ARITHMETIC IS DOUBLE PRECISION (DQPROG); QPROG
@@ -30,8 +36,11 @@ C
       PARAMETER (MAXV=60, MAXC=200)
       DOUBLE PRECISION DA(MAXC,MAXV), DB(MAXC), DG(MAXV), DH(MAXV,MAXV),
      *                 DDIAG, DSOL(MAXV), DLAM(MAXC)
-      INTEGER I, J, ISTAT
+      DOUBLE PRECISION QCOND, WERR, TRH, ERR, US                        ! D161
+      INTEGER I, J, ISTAT, NWARN                                        ! D161
       COMMON /QPSTAT/ ISTAT
+      COMMON /QPCND/ QCOND                                              ! D161
+      COMMON /QPWARN/ WERR, NWARN                                       ! D161
       IF (NVAR.LT.1 .OR. NVAR.GT.MAXV .OR. NCON.LT.0 .OR.
      *    NCON.GT.MAXC .OR. NEQ.LT.0 .OR. NEQ.GT.NCON) THEN
          ISTAT = 3
@@ -51,6 +60,23 @@ C
    30 CONTINUE
       CALL DQPROG (NVAR, NCON, NEQ, DA, MAXC, DB, DG, DH, MAXV, DDIAG,
      *             DSOL, NACT, IACT, DLAM)
+C     D161: THE ANSWER'S RELATIVE ERROR ON THE DIRECTIONS H DETERMINES,
+C     QCOND*(US + DIAG/TRACE(H)): H'S OWN REAL*4 ROUNDING (US = 2**-24)
+C     AND THE REGULARIZATION.  AT 1 OR MORE SINGLE PRECISION CARRIES NO
+C     DIGIT OF IT: THE CALL IS COUNTED, THE WORST ERROR KEPT (QPWARN_GET)
+      IF (ISTAT.EQ.0) THEN                                              ! D161
+         US = 0.5D0*EPSILON(1.0E0)                                      ! D161
+         TRH = 0.0D0                                                    ! D161
+         DO 35 J = 1, NVAR                                              ! D161
+            TRH = TRH + DH(J,J)                                         ! D161
+   35    CONTINUE                                                       ! D161
+         ERR = QCOND*US                                                 ! D161
+         IF (TRH.GT.0.0D0) ERR = QCOND*(US + DDIAG/TRH)                 ! D161
+         IF (ERR.GE.1.0D0) THEN                                         ! D161
+            NWARN = NWARN + 1                                           ! D161
+            WERR = MAX(WERR, ERR)                                       ! D161
+         END IF                                                         ! D161
+      END IF                                                            ! D161
       DIAG = DDIAG
       DO 40 J = 1, NVAR
          SOL(J) = DSOL(J)
@@ -132,6 +158,9 @@ C     RELATIVE TO |A(I,.)||SOL| + |B(I)| (QPROW), A DEPENDENT EQUALITY
 C     THAT HOLDS IS HELD INSTEAD OF REFUSED, A FULL STEP PROJECTS SOL
 C     BACK ONTO THE ACTIVE ROWS WHERE ROUNDING LEFT THEM OFF (QPRFN),
 C     AND NO SOL IS RETURNED THAT MISSES A ROW BY MORE THAN GTOL.
+C     ISSUE 31: A DEFINITE H IS SOLVED AS GIVEN (D160), A ROW THAT
+C     DEPENDS ON THE ACTIVE ONES AND HOLDS TO GTOL IS HELD (D162), AN
+C     UNBOUNDED PROBLEM IS STATUS 5 (D163), AND QCOND IS LEFT (D160).
       INTEGER NVAR, NCON, NEQ, LDA, LDH, NACT, IACT(*)
       DOUBLE PRECISION A(LDA,*), B(*), G(*), H(LDH,*), DIAG, SOL(*),
      *                 ALAMDA(*)
@@ -144,16 +173,21 @@ C     NUMERICALLY DEPENDENT ONES CAN ENTER BEFORE QPGAUS FINDS M SINGULAR.
       DOUBLE PRECISION L(MAXV,MAXV), W(MAXV), Z(MAXV), R(MAXC), U(MAXC),
      *                 GN(MAXV,MAXC), M(MAXC,MAXC), RHS(MAXC),
      *                 SGN(MAXC), ENORM(MAXC)
+      DOUBLE PRECISION MC(MAXC,MAXC)                                    ! D160
       DOUBLE PRECISION S, SMIN, T, T1, T2, UPLUS, ZN, PIVOT, SCALE, EPS,
      *                 TOL, TINY, DNEW, QPHMAX, ZR, SIZE, GTOL, QPKAPP
+      DOUBLE PRECISION QCOND, QPCOND                                    ! D160
       INTEGER I, J, K, P, KDROP, ITER, MAXIT, ISTAT
-C     HELD(I): EQUALITY I HOLDS AND DEPENDS ON THE ACTIVE ROWS; NOT
-C     ADDED, AND NOT PICKED AGAIN UNTIL SOL MOVES
+C     HELD(I): ROW I HOLDS AND DEPENDS ON THE ACTIVE ROWS; NOT ADDED,
+C     AND NOT PICKED AGAIN UNTIL SOL MOVES
       LOGICAL ACTIVE(MAXC), HELD(MAXC), DONE
+      LOGICAL DEFNT, QPUNBD                                             ! D160
       COMMON /QPSTAT/ ISTAT
+      COMMON /QPCND/ QCOND                                              ! D160
       EPS = EPSILON(1.0D0)
       ISTAT = 0
       NACT = 0
+      QCOND = 0.0D0                                                     ! D160
       IF (NVAR.LT.1 .OR. NVAR.GT.MAXV .OR. NCON.LT.0 .OR.
      *    NCON.GT.MAXC .OR. NEQ.LT.0 .OR. NEQ.GT.NCON .OR.
      *    NCON.GT.LDA .OR. NVAR.GT.LDH) THEN
@@ -163,9 +197,14 @@ C     ADDED, AND NOT PICKED AGAIN UNTIL SOL MOVES
 C     ---- CHOLESKY OF H + DIAG*I, RAISING DIAG WHERE A PIVOT FAILS ----
 C     TINY IS RELATIVE TO THE LARGEST |H(I,J)| READ (THE LOWER TRIANGLE;
 C     ISSUE 22: MAX |H(I,I)| LEFT A HUGE INDEFINITE H AN INFINITE DIAG)
+C     D160: FIRST WITH DIAG = 0 AND TINY = NVAR*EPS*SCALE, THE ROUNDING
+C     OF A PIVOT: WHERE EVERY PIVOT PASSES, H IS POSITIVE DEFINITE TO ITS
+C     ROUNDING AND SOLVED AS GIVEN (A CONDITION OF 1E14 INCLUDED); ELSE
+C     THE DIAG RULE RUNS AS BEFORE, FROM DIAG = 0 WITH SQRT(EPS)*SCALE
       SCALE = QPHMAX(NVAR, H, LDH)
       IF (SCALE.EQ.0.0D0) SCALE = 1.0D0
-      TINY = SQRT(EPS)*SCALE
+      DEFNT = .TRUE.                                                    ! D160
+      TINY = DBLE(NVAR)*EPS*SCALE                                       ! D160
       DIAG = 0.0D0
   100 CONTINUE
       DO 130 J = 1, NVAR
@@ -173,6 +212,11 @@ C     ISSUE 22: MAX |H(I,I)| LEFT A HUGE INDEFINITE H AN INFINITE DIAG)
          DO 110 K = 1, J-1
             PIVOT = PIVOT - L(J,K)**2
   110    CONTINUE
+         IF (PIVOT.LT.TINY .AND. DEFNT) THEN                            ! D160
+            DEFNT = .FALSE.                                             ! D160
+            TINY = SQRT(EPS)*SCALE                                      ! D160
+            GO TO 100                                                   ! D160
+         END IF                                                         ! D160
          IF (PIVOT.LT.TINY) THEN
 C           A SHORTFALL BELOW DIAG'S LAST BIT TAKES THE NEXT NUMBER UP
 C           (ELSE STATEMENT 100 WOULD REPEAT THE SAME FACTORIZATION)
@@ -305,9 +349,11 @@ C     ROUNDING (ISSUE 22: THE TEST WAS ZN > EPS |N+|**2, WHICH ROUNDING
 C     PASSED, AND A FULL STEP OF S/ZN ~ 1E14 ALONG NOISE ADDED P)
       T2 = -1.0D0
       IF (ZN.GT.1.0D3*EPS*ZR) T2 = -S/ZN
-      IF (T2.LT.0.0D0 .AND. P.LE.NEQ .AND. UPLUS.EQ.0.0D0 .AND.
-     *    -S.LE.1.0D3*EPS*SIZE) THEN
-C        A DEPENDENT EQUALITY THAT HOLDS (A REPEATED ROW, 0 X = 0)
+C     A DEPENDENT ROW THAT HOLDS (A REPEATED ROW, 0 X = 0, AN INEQUALITY
+C     REPEATING AN ACTIVE EQUALITY) TO THE METHOD'S OWN ROUNDING GTOL
+C     (D162: WAS 1E3 EPS |ROW|, EQUALITIES ONLY: 'INCONSISTENT')
+      IF (T2.LT.0.0D0 .AND. UPLUS.EQ.0.0D0 .AND.                        ! D162
+     *    -S.LE.GTOL*SIZE) THEN                                         ! D162
          HELD(P) = .TRUE.
          GO TO 200
       END IF
@@ -366,6 +412,16 @@ C     THE ORIGINAL CONSTRAINTS' SENSE ----
             RETURN
          END IF
   905 CONTINUE
+C     D163: WHERE H WAS SHIFTED, NO ANSWER FOR AN UNBOUNDED PROBLEM
+      IF (DIAG.GT.0.0D0) THEN                                           ! D163
+         IF (QPUNBD(NVAR, NCON, NEQ, A, LDA, G, H, LDH, L, MAXV, SOL,   ! D163
+     *              W, Z)) THEN                                         ! D163
+            ISTAT = 5                                                   ! D163
+            RETURN                                                      ! D163
+         END IF                                                         ! D163
+      END IF                                                            ! D163
+      QCOND = QPCOND(NVAR, NACT, IACT, SGN, A, LDA, H, LDH, L, MAXV,    ! D160
+     *               GN, M, MC, MAXC, RHS, R, W, Z)                     ! D160
       DO 910 K = 1, NACT
          ALAMDA(K) = SGN(IACT(K))*U(K)
   910 CONTINUE
@@ -471,6 +527,135 @@ C     TIMES IT (ISSUE 22).  E AND Y ARE WORK ARRAYS OF LENGTH N.
       RETURN
       END
 C
+      SUBROUTINE QPHV (N, H, LDH, X, Y)                                 ! D160
+C     Y = H X, H READ FROM ITS LOWER TRIANGLE (THE PART QPROG READS)
+      INTEGER N, LDH, I, J                                              ! D160
+      DOUBLE PRECISION H(LDH,*), X(*), Y(*), S                          ! D160
+      DO 20 I = 1, N                                                    ! D160
+         S = 0.0D0                                                      ! D160
+         DO 10 J = 1, N                                                 ! D160
+            IF (I.GE.J) S = S + H(I,J)*X(J)                             ! D160
+            IF (I.LT.J) S = S + H(J,I)*X(J)                             ! D160
+   10    CONTINUE                                                       ! D160
+         Y(I) = S                                                       ! D160
+   20 CONTINUE                                                          ! D160
+      RETURN                                                            ! D160
+      END                                                               ! D160
+C
+      DOUBLE PRECISION FUNCTION QPCOND (NVAR, NACT, IACT, SGN, A, LDA,  ! D160
+     *                 H, LDH, L, LDL, GN, M, MC, LDM, RHS, R, Y, E)    ! D160
+C     D160: TRACE(H) * TRACE(P H P), P = (H+DIAG I)^-1 - GN M^-1 GN' THE
+C     INVERSE OF H + DIAG I ON THE DIRECTIONS THE ACTIVE ROWS LEAVE FREE
+C     (GN = (H+DIAG I)^-1 N, M = N'GN, N THE ACTIVE NORMALS).  A DIRECTION
+C     OF H'S OF EIGENVALUE LAMBDA COUNTS LAMBDA/(LAMBDA+DIAG)**2: 1/LAMBDA
+C     WHERE H DETERMINES IT, NOTHING ON H'S NULL DIRECTIONS (WHICH DIAG
+C     DECIDES) NOR ON THOSE THE ACTIVE ROWS PIN.  IT BOUNDS THE RELATIVE
+C     CHANGE OF SOL PER RELATIVE CHANGE OF H, ON THE DIRECTIONS H
+C     DETERMINES; WITH DIAG = 0 AND NO ACTIVE ROW, TR(H) TR(H^-1).  WHERE
+C     M IS SINGULAR (NUMERICALLY DEPENDENT ACTIVE ROWS) P = (H+DIAG I)^-1.
+C     MC, RHS, R, Y, E: WORK.  FREE OF H'S UNITS AND OF THE ROWS' SCALES.
+      INTEGER NVAR, NACT, IACT(*), LDA, LDH, LDL, LDM, I, J, K, INFO    ! D160
+      DOUBLE PRECISION SGN(*), A(LDA,*), H(LDH,*), L(LDL,*), GN(LDL,*), ! D160
+     *                 M(LDM,*), MC(LDM,*), RHS(*), R(*), Y(*), E(*),   ! D160
+     *                 TH, TR, S                                        ! D160
+      LOGICAL PROJ                                                      ! D160
+      CALL QPNMAT (NVAR, NACT, IACT, SGN, A, LDA, L, LDL, GN, MC, LDM,  ! D160
+     *             E)                                                   ! D160
+      PROJ = NACT.GT.0                                                  ! D160
+      TH = 0.0D0                                                        ! D160
+      TR = 0.0D0                                                        ! D160
+      DO 60 J = 1, NVAR                                                 ! D160
+         TH = TH + H(J,J)                                               ! D160
+         DO 10 I = 1, NVAR                                              ! D160
+            E(I) = 0.0D0                                                ! D160
+   10    CONTINUE                                                       ! D160
+         E(J) = 1.0D0                                                   ! D160
+         CALL QPCHSL (NVAR, L, LDL, E, Y)                               ! D160
+         IF (PROJ) THEN                                                 ! D160
+            DO 20 K = 1, NACT                                           ! D160
+               RHS(K) = GN(J,K)                                         ! D160
+               DO 15 I = 1, NACT                                        ! D160
+                  M(I,K) = MC(I,K)                                      ! D160
+   15          CONTINUE                                                 ! D160
+   20       CONTINUE                                                    ! D160
+            CALL QPGAUS (NACT, M, LDM, RHS, R, INFO)                    ! D160
+            PROJ = INFO.EQ.0                                            ! D160
+         END IF                                                         ! D160
+         IF (PROJ) THEN                                                 ! D160
+            DO 40 I = 1, NVAR                                           ! D160
+               S = Y(I)                                                 ! D160
+               DO 30 K = 1, NACT                                        ! D160
+                  S = S - GN(I,K)*R(K)                                  ! D160
+   30          CONTINUE                                                 ! D160
+               Y(I) = S                                                 ! D160
+   40       CONTINUE                                                    ! D160
+         END IF                                                         ! D160
+         CALL QPHV (NVAR, H, LDH, Y, E)                                 ! D160
+         DO 50 I = 1, NVAR                                              ! D160
+            TR = TR + Y(I)*E(I)                                         ! D160
+   50    CONTINUE                                                       ! D160
+   60 CONTINUE                                                          ! D160
+      QPCOND = TH*TR                                                    ! D160
+      RETURN                                                            ! D160
+      END                                                               ! D160
+C
+      LOGICAL FUNCTION QPUNBD (NVAR, NCON, NEQ, A, LDA, G, H, LDH, L,   ! D163
+     *                         LDL, SOL, D, E)                          ! D163
+C     D163: IS THE PROBLEM UNBOUNDED BELOW?  WHERE DIAG > 0 THE
+C     REGULARIZED ANSWER SOL LIES FAR OUT ALONG H'S NULL DIRECTIONS IF
+C     THE OBJECTIVE FALLS ALONG THEM: D = SOL - (H+DIAG I)^-1 H SOL KEEPS
+C     THAT PART AND DAMPS THE REST BY DIAG/(LAMBDA+DIAG).  D CERTIFIES
+C     IT: EVERY ROW STAYS FEASIBLE ALONG D (A(I,.)D = 0 FOR AN EQUALITY,
+C     >= 0 FOR AN INEQUALITY), AND THE OBJECTIVE FALLS WITHOUT BOUND: H D
+C     = 0 AND G'D < 0, OR D'H D < 0.  EACH TO TAU = SQRT(EPS) OF THE
+C     SIZE OF ITS TERMS (H D OF MAX|H(I,J)| MAX|D(J)|, D'H D OF
+C     MAX|H(I,J)| D'D): THE DIAG RULE'S OWN LEVEL, WHICH TAKES A
+C     CURVATURE BELOW IT FOR NONE.  D, E: WORK.
+      INTEGER NVAR, NCON, NEQ, LDA, LDH, LDL, I, J                      ! D163
+      DOUBLE PRECISION A(LDA,*), G(*), H(LDH,*), L(LDL,*), SOL(*),      ! D163
+     *                 D(*), E(*), TAU, HMAX, DMAX, DD, CURV, GD, GS,   ! D163
+     *                 S, SIZE, QPHMAX                                  ! D163
+      LOGICAL FLAT                                                      ! D163
+      QPUNBD = .FALSE.                                                  ! D163
+      TAU = SQRT(EPSILON(1.0D0))                                        ! D163
+      CALL QPHV (NVAR, H, LDH, SOL, E)                                  ! D163
+      CALL QPCHSL (NVAR, L, LDL, E, D)                                  ! D163
+      DMAX = 0.0D0                                                      ! D163
+      DD = 0.0D0                                                        ! D163
+      GD = 0.0D0                                                        ! D163
+      GS = 0.0D0                                                        ! D163
+      DO 10 J = 1, NVAR                                                 ! D163
+         D(J) = SOL(J) - D(J)                                           ! D163
+         DMAX = MAX(DMAX, ABS(D(J)))                                    ! D163
+         DD = DD + D(J)*D(J)                                            ! D163
+         GD = GD + G(J)*D(J)                                            ! D163
+         GS = GS + ABS(G(J)*D(J))                                       ! D163
+   10 CONTINUE                                                          ! D163
+      IF (DMAX.EQ.0.0D0) RETURN                                         ! D163
+      HMAX = QPHMAX(NVAR, H, LDH)                                       ! D163
+      CALL QPHV (NVAR, H, LDH, D, E)                                    ! D163
+      FLAT = .TRUE.                                                     ! D163
+      CURV = 0.0D0                                                      ! D163
+      DO 20 I = 1, NVAR                                                 ! D163
+         IF (ABS(E(I)).GT.TAU*HMAX*DMAX) FLAT = .FALSE.                 ! D163
+         CURV = CURV + D(I)*E(I)                                        ! D163
+   20 CONTINUE                                                          ! D163
+      IF (.NOT.((FLAT .AND. GD.LT.-TAU*GS) .OR.                         ! D163
+     *          CURV.LT.-TAU*HMAX*DD)) RETURN                           ! D163
+      DO 40 I = 1, NCON                                                 ! D163
+         S = 0.0D0                                                      ! D163
+         SIZE = 0.0D0                                                   ! D163
+         DO 30 J = 1, NVAR                                              ! D163
+            S = S + A(I,J)*D(J)                                         ! D163
+            SIZE = SIZE + ABS(A(I,J)*D(J))                              ! D163
+   30    CONTINUE                                                       ! D163
+         IF (I.LE.NEQ) S = -ABS(S)                                      ! D163
+         IF (S.LT.-TAU*SIZE) RETURN                                     ! D163
+   40 CONTINUE                                                          ! D163
+      QPUNBD = .TRUE.                                                   ! D163
+      RETURN                                                            ! D163
+      END                                                               ! D163
+C
       DOUBLE PRECISION FUNCTION QPHMAX (N, H, LDH)
 C     THE LARGEST |H(I,J)| OF THE LOWER TRIANGLE (THE PART QPROG READS).
       INTEGER N, LDH, I, J
@@ -561,6 +746,29 @@ C     THE STATUS OF THE LAST QPROG CALL (FOR THE PYTHON FACE).
       ISTAT_OUT = ISTAT
       RETURN
       END
+C
+      SUBROUTINE QPCOND_GET (QCOND_OUT)                                 ! D160
+C     QCOND OF THE LAST SOLVED CALL (FOR THE PYTHON FACE; QPCOND)
+      DOUBLE PRECISION QCOND_OUT, QCOND                                 ! D160
+      COMMON /QPCND/ QCOND                                              ! D160
+      QCOND_OUT = QCOND                                                 ! D160
+      RETURN                                                            ! D160
+      END                                                               ! D160
+C
+      SUBROUTINE QPWARN_GET (NWARN_OUT, WERR_OUT, RESET)                ! D161
+C     HOW MANY REAL*4 QPROG CALLS SINCE THE LAST RESET SINGLE PRECISION
+C     COULD NOT CARRY, AND THE WORST RELATIVE ERROR; RESET <> 0 CLEARS
+      INTEGER NWARN_OUT, RESET, NWARN                                   ! D161
+      DOUBLE PRECISION WERR_OUT, WERR                                   ! D161
+      COMMON /QPWARN/ WERR, NWARN                                       ! D161
+      NWARN_OUT = NWARN                                                 ! D161
+      WERR_OUT = WERR                                                   ! D161
+      IF (RESET.NE.0) THEN                                              ! D161
+         NWARN = 0                                                      ! D161
+         WERR = 0.0D0                                                   ! D161
+      END IF                                                            ! D161
+      RETURN                                                            ! D161
+      END                                                               ! D161
 C
       SUBROUTINE UMACH (N, NUNIT)
 C     IMSL UMACH: N=1 STANDARD INPUT UNIT, N=2 STANDARD OUTPUT UNIT.

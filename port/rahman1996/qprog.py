@@ -50,22 +50,33 @@ Units are the caller's; in the CSSP balancing problem x holds the nine point mas
 from __future__ import annotations
 
 import math
+import warnings
 
 import numpy as np
 from numba import njit
 
 from ...checks import finite_matrix, qp_arguments
-from ...errors import QPError
+from ...errors import PrecisionWarning, QPError
 
 #: DQPROG's PARAMETERs: at most 60 variables and 200 constraints
 MAXV, MAXC = 60, 200
-#: status codes, COMMON /QPSTAT/ (MISSES: QPSOLV's last guard, D050)
-SOLVED, INCONSISTENT, ITERATION_LIMIT, BAD_ARGUMENTS, MISSES = 0, 1, 2, 3, 4
+#: status codes, COMMON /QPSTAT/ (MISSES: QPSOLV's last guard, D050; UNBOUNDED: D163)
+SOLVED, INCONSISTENT, ITERATION_LIMIT, BAD_ARGUMENTS, MISSES, UNBOUNDED = 0, 1, 2, 3, 4, 5
 #: QPError's message for status 4
 MISSES_MESSAGE = ("QPROG: the solution found misses a constraint by more than the method's rounding "
                   "(the constraints are inconsistent within rounding, or the problem too ill-conditioned)")
+#: QPError's message for each failing status, in both faces
+STATUS_MESSAGES = {
+    INCONSISTENT: "QPROG: the constraints are inconsistent",
+    ITERATION_LIMIT: "QPROG: iteration limit reached",
+    MISSES: MISSES_MESSAGE,
+    UNBOUNDED: ("QPROG: the problem is unbounded below (a direction along which every constraint stays "
+                "feasible and the objective falls without bound, to sqrt(eps) of its terms; D163)"),
+}
 #: EPSILON(1.0D0)
 EPS = float(np.finfo(np.float64).eps)
+#: the unit roundoff of REAL*4, 0.5*EPSILON(1.0E0): the precision of the REAL*4 entry's data (D161)
+REAL4_UNIT = 2.0 ** -24
 
 
 @njit(cache=True)
@@ -86,8 +97,10 @@ def _hmax(h):
 
 @njit(cache=True)
 def _cholesky_shift(h, low):
-    """Statements 5-130: L L' = H + DIAG*I, raising DIAG where a pivot falls below TINY =
-    sqrt(eps) * max |H_ij| (lower triangle).
+    """Statements 5-130: L L' = H + DIAG*I.  First with DIAG = 0 and TINY = n eps max |H_ij|
+    (lower triangle), the rounding of a pivot: where every pivot passes, H is positive
+    definite to its rounding and DIAG = 0 (D160).  Else the DIAG rule, unchanged: from
+    DIAG = 0, DIAG raised where a pivot falls below TINY = sqrt(eps) max |H_ij|.
 
     Fills ``low`` (L, lower triangle) and returns DIAG.  A shortfall below DIAG's last bit
     takes the next number up (DNEW = NEAREST(DIAG, 1.0D0)).
@@ -96,7 +109,8 @@ def _cholesky_shift(h, low):
     scale = _hmax(h)
     if scale == 0.0:
         scale = 1.0
-    tiny = math.sqrt(EPS) * scale
+    definite = True
+    tiny = float(n) * EPS * scale
     diag = 0.0
     while True:                                           # 100 CONTINUE
         restart = False
@@ -104,6 +118,11 @@ def _cholesky_shift(h, low):
             pivot = h[j, j] + diag
             for k in range(j):                            # DO 110: - L(J,K)**2
                 pivot = pivot - low[j, k] * low[j, k]
+            if pivot < tiny and definite:                 # not definite to its rounding: the DIAG rule
+                definite = False
+                tiny = math.sqrt(EPS) * scale
+                restart = True
+                break                                     # GO TO 100
             if pivot < tiny:
                 raised = diag + (tiny - pivot)
                 if raised <= diag:
@@ -249,8 +268,110 @@ def _kappa(h, diag, low, e, y):
 
 
 @njit(cache=True)
+def _hv(h, x, y):
+    """QPHV: y = H x, H read from its lower triangle."""
+    n = x.shape[0]
+    for i in range(n):                                    # DO 20
+        s = 0.0
+        for j in range(n):                                # DO 10
+            if i >= j:
+                s = s + h[i, j] * x[j]
+            else:
+                s = s + h[j, i] * x[j]
+        y[i] = s
+
+
+@njit(cache=True)
+def _condition(h, low, a, sgn, iact, nact, gn, m, rhs, r, y, e):
+    """QPCOND (D160): tr(H) tr(P H P), P = (H + DIAG I)^-1 - GN M^-1 GN' the inverse of
+    H + DIAG I on the directions the active rows leave free.  A direction of H's of
+    eigenvalue lambda counts lambda/(lambda + DIAG)^2: 1/lambda where H determines it,
+    nothing on H's null directions (DIAG decides those) nor on those the active rows pin.
+    It bounds the relative change of sol per relative change of H on the directions H
+    determines; with DIAG = 0 and no active row it is tr(H) tr(H^-1).  Where M is singular
+    (numerically dependent active rows), P = (H + DIAG I)^-1.  Free of units."""
+    nvar = low.shape[0]
+    size = max(nact, 1)
+    mc = np.empty((size, size))
+    _nmat(low, a, sgn, iact, nact, gn, mc, e)
+    project = nact > 0
+    th = 0.0
+    tr = 0.0
+    for j in range(nvar):                                 # DO 60
+        th = th + h[j, j]
+        for i in range(nvar):                             # DO 10
+            e[i] = 0.0
+        e[j] = 1.0
+        _chsl(low, e, y)
+        if project:
+            for k in range(nact):                         # DO 20
+                rhs[k] = gn[k, j]
+                for i in range(nact):                     # DO 15
+                    m[i, k] = mc[i, k]
+            project = _gaus(nact, m, rhs, r) == 0
+        if project:
+            for i in range(nvar):                         # DO 40
+                s = y[i]
+                for k in range(nact):                     # DO 30
+                    s = s - gn[k, i] * r[k]
+                y[i] = s
+        _hv(h, y, e)
+        for i in range(nvar):                             # DO 50
+            tr = tr + y[i] * e[i]
+    return th * tr
+
+
+@njit(cache=True)
+def _unbounded(h, g, a, neq, low, sol, d, e):
+    """QPUNBD (D163): is the problem unbounded below?  Where DIAG > 0 the regularized answer
+    lies far out along H's null directions if the objective falls along them:
+    d = sol - (H + DIAG I)^-1 H sol keeps that part and damps the rest by DIAG/(lambda + DIAG).
+    d certifies it: every row stays feasible along d (a_i d = 0 for an equality, >= 0 for an
+    inequality) and the objective falls without bound, H d = 0 and g'd < 0, or d'H d < 0;
+    each to tau = sqrt(eps) of the size of its terms (H d of max|H_ij| max|d_j|, d'H d of
+    max|H_ij| d'd): the DIAG rule's own level, which takes a curvature below it for none."""
+    nvar, ncon = sol.shape[0], a.shape[0]
+    tau = math.sqrt(EPS)
+    _hv(h, sol, e)
+    _chsl(low, e, d)
+    dmax = 0.0
+    dd = 0.0
+    gd = 0.0
+    gs = 0.0
+    for j in range(nvar):                                 # DO 10
+        d[j] = sol[j] - d[j]
+        dmax = _max(dmax, abs(d[j]))
+        dd = dd + d[j] * d[j]
+        gd = gd + g[j] * d[j]
+        gs = gs + abs(g[j] * d[j])
+    if dmax == 0.0:
+        return False
+    hmax = _hmax(h)
+    _hv(h, d, e)
+    flat = True
+    curv = 0.0
+    for i in range(nvar):                                 # DO 20
+        if abs(e[i]) > tau * hmax * dmax:
+            flat = False
+        curv = curv + d[i] * e[i]
+    if not ((flat and gd < -tau * gs) or curv < -tau * hmax * dd):
+        return False
+    for i in range(ncon):                                 # DO 40
+        s = 0.0
+        size = 0.0
+        for j in range(nvar):                             # DO 30
+            s = s + a[i, j] * d[j]
+            size = size + abs(a[i, j] * d[j])
+        if i < neq:
+            s = -abs(s)
+        if s < -tau * size:
+            return False
+    return True
+
+
+@njit(cache=True)
 def _dqprog(h, g, a, b, neq):
-    """DQPROG on validated arguments: (status, DIAG, SOL, NACT, IACT, ALAMDA).
+    """DQPROG on validated arguments: (status, DIAG, SOL, NACT, IACT, ALAMDA, QCOND).
 
     QPSOLV (``_solve``) on the problem in its own units: row i of a and b times 2**e_i, so
     that its largest |a_ij| is in [1, 2); H and g times 4**(-k), so that the largest |H_ij|
@@ -268,6 +389,19 @@ def _dqprog(h, g, a, b, neq):
         for j in range(nvar):                             # DO 15
             a_s[i, j] = math.ldexp(a[i, j], rows[i])      # SCALE(A(I,J), IRS(I))
         b_s[i] = math.ldexp(b[i], rows[i])
+    h_s, g_s, kh = _scaled_objective(h, g)
+    status, diag, sol, nact, iact, alamda, cond = _solve(h_s, g_s, a_s, b_s, neq)
+    diag = math.ldexp(diag, 2 * kh)
+    for k in range(nact):                                 # DO 50
+        alamda[k] = math.ldexp(alamda[k], 2 * kh + rows[iact[k]])
+    return status, diag, sol, nact, iact, alamda, cond
+
+
+@njit(cache=True)
+def _scaled_objective(h, g):
+    """DQPROG's H and g times 4**(-kh), the largest |H_ij| of the lower triangle (of g where
+    H = 0) in [1, 4): (H_s, g_s, kh), H_s's upper triangle zero."""
+    nvar = g.shape[0]
     big = _hmax(h)
     if big == 0.0:
         for j in range(nvar):                             # DO 35
@@ -280,22 +414,26 @@ def _dqprog(h, g, a, b, neq):
         g_s[j] = math.ldexp(g[j], -2 * kh)
         for i in range(j, nvar):                          # DO 40
             h_s[i, j] = math.ldexp(h[i, j], -2 * kh)
-    status, diag, sol, nact, iact, alamda = _solve(h_s, g_s, a_s, b_s, neq)
-    diag = math.ldexp(diag, 2 * kh)
-    for k in range(nact):                                 # DO 50
-        alamda[k] = math.ldexp(alamda[k], 2 * kh + rows[iact[k]])
-    return status, diag, sol, nact, iact, alamda
+    return h_s, g_s, kh
+
+
+@njit(cache=True)
+def _shift(h, g):
+    """DIAG as DQPROG finds it: the DIAG rule on the scaled H, scaled back."""
+    h_s, g_s, kh = _scaled_objective(h, g)
+    low = np.zeros(h_s.shape)
+    return math.ldexp(_cholesky_shift(h_s, low), 2 * kh)
 
 
 @njit(cache=True)
 def _solve(h, g, a, b, neq):
     """QPSOLV, the Goldfarb-Idnani method on the scaled problem: (status, DIAG, SOL, NACT,
-    IACT, ALAMDA).
+    IACT, ALAMDA, QCOND).
 
     Indices are 0-based (constraint i is the FORTRAN's I = i+1; P = 0 is p = -1).
     ``gn[k]`` holds the column GN(.,K).  Work arrays are sized by NCON (see the module
-    docstring), the FORTRAN's by MAXV.  ``held[i]``: equality i holds and depends on the
-    active rows; not added, and not picked again until sol moves (D050).
+    docstring), the FORTRAN's by MAXV.  ``held[i]``: row i holds and depends on the
+    active rows; not added, and not picked again until sol moves (D050, D162).
     """
     nvar, ncon = g.shape[0], b.shape[0]
     low = np.zeros((nvar, nvar))
@@ -335,7 +473,7 @@ def _solve(h, g, a, b, neq):
         # ---- outer loop: pick a violated constraint P (200)
         it += 1
         if it > maxit:
-            return ITERATION_LIMIT, diag, sol, nact, iact, alamda
+            return ITERATION_LIMIT, diag, sol, nact, iact, alamda, 0.0
         p = -1
         smin = 0.0
         for i in range(ncon):                             # DO 210
@@ -361,7 +499,7 @@ def _solve(h, g, a, b, neq):
             # ---- inner loop: step towards satisfying constraint P (300)
             it += 1
             if it > maxit:
-                return ITERATION_LIMIT, diag, sol, nact, iact, alamda
+                return ITERATION_LIMIT, diag, sol, nact, iact, alamda, 0.0
             # W = H^-1 N+, GN(.,K) = H^-1 N_K for the active normals
             for j in range(nvar):                         # DO 305
                 rhs[j] = sgn[p] * a[p, j]
@@ -376,7 +514,7 @@ def _solve(h, g, a, b, neq):
                         s = s + sgn[ii] * a[ii, j] * w[j]
                     rhs[i] = s
                 if _gaus(nact, m, rhs, r) != 0:
-                    return INCONSISTENT, diag, sol, nact, iact, alamda
+                    return INCONSISTENT, diag, sol, nact, iact, alamda, 0.0
             zn = 0.0
             zr = 0.0                                      # the scale of ZN's rounding
             for j in range(nvar):                         # DO 360
@@ -405,12 +543,12 @@ def _solve(h, g, a, b, neq):
             t2 = -1.0
             if zn > 1.0e3 * EPS * zr:
                 t2 = -(s / zn)
-            if t2 < 0.0 and p < neq and uplus == 0.0 and -s <= 1.0e3 * EPS * size:
-                held[p] = True                            # a dependent equality that holds
+            if t2 < 0.0 and uplus == 0.0 and -s <= gtol * size:
+                held[p] = True                            # a dependent row that holds to GTOL (D162)
                 break                                     # GO TO 200
             if t2 < 0.0 and kdrop < 0:
                 # no step can satisfy constraint P: the constraints are inconsistent
-                return INCONSISTENT, diag, sol, nact, iact, alamda
+                return INCONSISTENT, diag, sol, nact, iact, alamda, 0.0
             if t2 < 0.0:
                 t = t1                                    # dual step only, then drop
             elif kdrop < 0:
@@ -445,46 +583,107 @@ def _solve(h, g, a, b, neq):
         if i < neq:
             s = -abs(s)
         if s < -gtol * size:
-            return MISSES, diag, sol, nact, iact, alamda
+            return MISSES, diag, sol, nact, iact, alamda, 0.0
+    if diag > 0.0 and _unbounded(h, g, a, neq, low, sol, w, z):   # D163
+        return UNBOUNDED, diag, sol, nact, iact, alamda, 0.0
+    cond = _condition(h, low, a, sgn, iact, nact, gn, m, rhs, r, w, z)   # D160
     for k in range(nact):                                 # DO 910
         alamda[k] = sgn[iact[k]] * u[k]
-    return SOLVED, diag, sol, nact, iact, alamda
+    return SOLVED, diag, sol, nact, iact, alamda, cond
 
 
 def hessian_shift(h, g=None) -> float:
-    """DIAG: the multiple of I that QPROG adds to H for min g'x + x'Hx/2 (0 for a positive
-    definite H; g, default 0, sets the scale only where H = 0).
-
-    The DIAG rule of statements 5-130 on the scaled H, as ``qprog`` finds it (it is its
-    answer's ``diag`` without constraints).
+    """DIAG: the multiple of I that QPROG adds to H for min g'x + x'Hx/2 (g, default 0, sets
+    the scale only where H = 0): 0 where H is positive definite to its rounding (every
+    Cholesky pivot at least n eps max|H_ij|, D160), else the DIAG rule of statements 5-130
+    on the scaled H, as ``qprog`` finds it (its answer's ``diag``, whatever the constraints).
     """
     h = finite_matrix("h", h)
-    return qprog(h, np.zeros(len(h)) if g is None else g)["diag"]
+    h, g, _, _, _ = qp_arguments(h, np.zeros(len(h)) if g is None else g, None, None, 0, MAXV, MAXC)
+    return float(_shift(np.ascontiguousarray(h), g))
+
+
+def answer(status: int, diag: float, sol, active, multipliers, condition: float) -> dict:
+    """What QPROG returns, in both faces: QPError for a failing status (``STATUS_MESSAGES``) or
+    a non-finite result, else the result dict (``qprog``'s docstring)."""
+    if status in STATUS_MESSAGES:
+        raise QPError(STATUS_MESSAGES[status])
+    if not (np.isfinite(diag) and np.isfinite(condition) and np.all(np.isfinite(sol))
+            and np.all(np.isfinite(multipliers))):
+        raise QPError("QPROG: the solution or DIAG (the shift of H) is not finite (the arithmetic overflowed)")
+    return {"sol": sol, "diag": float(diag), "active": active, "multipliers": multipliers,
+            "regularized": bool(diag > 0.0), "condition": float(condition)}
+
+
+def relative_error(h, result: dict, unit: float = EPS) -> float:
+    """The bound on the answer's relative error on the directions H determines (D160, D161):
+    condition * (unit + DIAG / tr(H)), ``unit`` the rounding of H's data (eps, or 2**-24 for
+    the REAL*4 entry), DIAG / tr(H) the regularization's share (where tr(H) > 0).  The REAL*4
+    entry's test, operation for operation as the FORTRAN (QPROG, statements after DQPROG)."""
+    h = np.asarray(h, dtype=np.float64)
+    trace = 0.0
+    for j in range(h.shape[0]):                           # DO 35
+        trace = trace + float(h[j, j])
+    if trace > 0.0:
+        return result["condition"] * (unit + result["diag"] / trace)
+    return result["condition"] * unit
+
+
+def precision_warning(h, result: dict) -> PrecisionWarning | None:
+    """The warning ``qprog`` gives (both faces): where DIAG > 0 the answer is the regularized
+    problem's; where the relative error bound (``relative_error``) reaches 1, no digit of it
+    may be right.  None otherwise."""
+    error = relative_error(h, result)
+    if result["regularized"]:
+        return PrecisionWarning(
+            f"QPROG: H is not positive definite to its rounding (a Cholesky pivot below n eps max|H_ij|), so "
+            f"H + DIAG*I was used with DIAG = {result['diag']:.3g}: the answer minimizes g'x + x'(H + DIAG*I)x/2, "
+            "the regularized problem's, not H's (result['regularized'], register D160)",
+            condition=result["condition"], relative_error=error)
+    if error >= 1.0:
+        return PrecisionWarning(
+            f"QPROG: the answer's condition {result['condition']:.3g} passes what double precision carries: "
+            "it may have no correct digit (register D160)", condition=result["condition"], relative_error=error)
+    return None
+
+
+def solve(h, g, a=None, b=None, neq: int = 0) -> dict:
+    """``qprog`` without its warning, for a caller that reads ``regularized`` and
+    ``condition`` itself (the CSSP, whose H is singular by design: D057)."""
+    h, g, a, b, neq = qp_arguments(h, g, a, b, neq, MAXV, MAXC)
+    status, diag, sol, nact, iact, lam, cond = _dqprog(np.ascontiguousarray(h), g, np.ascontiguousarray(a), b, neq)
+    return answer(status, diag, sol, iact[:nact].copy(), lam[:nact].copy(), cond)
 
 
 def qprog(h, g, a=None, b=None, neq: int = 0) -> dict:
     """Our QPROG, ported (IMSL's calling convention, Goldfarb-Idnani; register D050).
 
     Minimizes g'x + x'Hx/2 subject to a[:neq] x = b[:neq] and a[neq:] x >= b[neq:].
-    Returns ``sol``, ``diag`` (the multiple of the identity added to H, 0 when H is
-    positive definite), ``active`` (0-based constraint indices) and ``multipliers``,
-    as ``linkrepro.legacy.rahman1996.qprog``.  Every row holds at ``sol`` to eps (1e3 +
-    8 kappa) of |a_i| |sol| + |b_i| (kappa >= cond(H + DIAG I), see the module docstring); an
-    equality that holds and depends on the others (a repeated row, 0 x = 0) is not in
-    ``active``.  Raises QPError when the constraints are inconsistent, where no solution
-    meets them to that tolerance, at the iteration limit or where the solution is not
-    finite (overflow);
-    ValueError/TypeError for bad arguments (shapes, sizes, non-finite h, g, a or b).
+    Returns, as ``linkrepro.legacy.rahman1996.qprog``:
+
+    - ``sol``; ``active`` (0-based constraint indices) and their ``multipliers``;
+    - ``diag``: 0 where H is positive definite to its rounding (every Cholesky pivot at least
+      n eps max|H_ij|): H is solved as given, a condition of 1e14 included.  Else the multiple
+      of I added to H (the DIAG rule) and ``regularized`` is True: the answer is the
+      regularized problem's, min g'x + x'(H + DIAG I)x/2, and a ``PrecisionWarning`` names
+      DIAG (D160);
+    - ``condition``: tr(H) tr(P H P), P the inverse of H + DIAG I on the directions the
+      active rows leave free, >= the condition of the answer on the directions H determines
+      (H's null directions, decided by DIAG, and the directions the active rows pin count for
+      nothing).  ``relative_error`` (condition (eps + DIAG/tr H)) bounds the answer's relative
+      error there; where it reaches 1, a ``PrecisionWarning``.
+
+    Every row holds at ``sol`` to GTOL = eps (1e3 + 8 kappa) of |a_i| |sol| + |b_i|,
+    kappa = tr(H + DIAG I) tr((H + DIAG I)^-1) >= its condition number.  A row that depends
+    on the active ones and holds to GTOL (a repeated row, 0 x = 0, an inequality repeating an
+    equality) is held, not added: not in ``active`` (D162).  QPError: the constraints are
+    inconsistent; no solution meets them to GTOL; the problem is unbounded below (where DIAG
+    > 0, certified by a direction ``_unbounded`` finds, D163); the iteration limit; a
+    non-finite answer (overflow).  ValueError/TypeError for bad arguments (shapes, sizes,
+    non-finite h, g, a or b).
     """
-    h, g, a, b, neq = qp_arguments(h, g, a, b, neq, MAXV, MAXC)
-    status, diag, sol, nact, iact, lam = _dqprog(np.ascontiguousarray(h), g, np.ascontiguousarray(a), b, neq)
-    if status == INCONSISTENT:
-        raise QPError("QPROG: the constraints are inconsistent")
-    if status == MISSES:
-        raise QPError(MISSES_MESSAGE)
-    if status == ITERATION_LIMIT:
-        raise QPError("QPROG: iteration limit reached")
-    if not (np.isfinite(diag) and np.all(np.isfinite(sol)) and np.all(np.isfinite(lam[:nact]))):
-        raise QPError("QPROG: the solution or DIAG (the shift of H) is not finite (the arithmetic overflowed)")
-    return {"sol": sol, "diag": float(diag), "active": iact[:nact].copy(),
-            "multipliers": lam[:nact].copy()}
+    result = solve(h, g, a, b, neq)
+    warning = precision_warning(h, result)
+    if warning is not None:
+        warnings.warn(warning, stacklevel=2)
+    return result
