@@ -173,7 +173,7 @@ C     NUMERICALLY DEPENDENT ONES CAN ENTER BEFORE QPGAUS FINDS M SINGULAR.
       DOUBLE PRECISION L(MAXV,MAXV), W(MAXV), Z(MAXV), R(MAXC), U(MAXC),
      *                 GN(MAXV,MAXC), M(MAXC,MAXC), RHS(MAXC),
      *                 SGN(MAXC), ENORM(MAXC)
-      DOUBLE PRECISION MC(MAXC,MAXC)                                    ! D160
+      DOUBLE PRECISION MC(MAXC,MAXC), CG(MAXC), STOL                    ! D160
       DOUBLE PRECISION S, SMIN, T, T1, T2, UPLUS, ZN, PIVOT, SCALE, EPS,
      *                 TOL, TINY, DNEW, QPHMAX, ZR, SIZE, GTOL, QPKAPP
       DOUBLE PRECISION QCOND, QPCOND                                    ! D160
@@ -181,7 +181,7 @@ C     NUMERICALLY DEPENDENT ONES CAN ENTER BEFORE QPGAUS FINDS M SINGULAR.
 C     HELD(I): ROW I HOLDS AND DEPENDS ON THE ACTIVE ROWS; NOT ADDED,
 C     AND NOT PICKED AGAIN UNTIL SOL MOVES
       LOGICAL ACTIVE(MAXC), HELD(MAXC), DONE
-      LOGICAL DEFNT, QPUNBD                                             ! D160
+      LOGICAL DEFNT, QPUNBD, QPINDP                                     ! D160
       COMMON /QPSTAT/ ISTAT
       COMMON /QPCND/ QCOND                                              ! D160
       EPS = EPSILON(1.0D0)
@@ -239,6 +239,10 @@ C     1E3 EPS, AND 8 EPS KAPPA FOR THE ROUNDING OF THE METHOD WHERE
 C     H + DIAG*I IS ILL-CONDITIONED (ISSUE 22)
       GTOL = EPS*(1.0D3 + 8.0D0*QPKAPP(NVAR, H, LDH, DIAG, L, MAXV, W,
      *                                 Z))
+C     STOL: HOW FAR THE STATIONARITY MAY MISS BEFORE QPRFN REFINES IT:
+C     1E3 EPS WHERE H IS SOLVED AS GIVEN, GTOL WHERE DIAG > 0 (D160)
+      STOL = GTOL                                                       ! D160
+      IF (DIAG.EQ.0.0D0) STOL = 1.0D3*EPS                               ! D160
 C     ---- UNCONSTRAINED MINIMUM: SOL = -(H+DIAG I)^-1 G ----
       DO 140 I = 1, NVAR
          RHS(I) = -G(I)
@@ -347,8 +351,16 @@ C        R IS FREE OF UNITS (ISSUE 22: WAS EPS*MAX(1,|U(K)|), U IN G'S)
 C     Z = 0 (N+ DEPENDS ON THE ACTIVE NORMALS) UNLESS ZN STANDS ABOVE ITS
 C     ROUNDING (ISSUE 22: THE TEST WAS ZN > EPS |N+|**2, WHICH ROUNDING
 C     PASSED, AND A FULL STEP OF S/ZN ~ 1E14 ALONG NOISE ADDED P)
+C     D160: WHERE H IS ILL-CONDITIONED ZN FALLS BELOW 1E3 EPS ZR FOR AN
+C     INDEPENDENT ROW TOO: THEN A POSITIVE ZN IS TAKEN IF N+ IS
+C     INDEPENDENT OF THE ACTIVE NORMALS (QPINDP)
       T2 = -1.0D0
-      IF (ZN.GT.1.0D3*EPS*ZR) T2 = -S/ZN
+      IF (ZN.GT.1.0D3*EPS*ZR) THEN                                      ! D160
+         T2 = -S/ZN                                                     ! D160
+      ELSE IF (ZN.GT.0.0D0 .AND. NACT.GT.0) THEN                        ! D160
+         IF (QPINDP(NVAR, A, LDA, IACT, NACT, P, M, MAXC, RHS, CG))     ! D160
+     *      T2 = -S/ZN                                                  ! D160
+      END IF                                                            ! D160
 C     A DEPENDENT ROW THAT HOLDS (A REPEATED ROW, 0 X = 0, AN INEQUALITY
 C     REPEATING AN ACTIVE EQUALITY) TO THE METHOD'S OWN ROUNDING GTOL
 C     (D162: WAS 1E3 EPS |ROW|, EQUALITIES ONLY: 'INCONSISTENT')
@@ -390,7 +402,32 @@ C        FULL STEP: P JOINS THE ACTIVE SET
          U(NACT) = UPLUS
          ACTIVE(P) = .TRUE.
          CALL QPRFN (NVAR, NACT, IACT, SGN, A, LDA, B, L, MAXV, GTOL,
-     *               SOL, U, GN, M, MAXC, RHS, R, W)
+     *               SOL, U, GN, M, MAXC, RHS, R, W, H, LDH, G, DIAG,   ! D160
+     *               STOL, Z)                                           ! D160
+C        D160: AN INEQUALITY'S MULTIPLIER THE REFINEMENT LEFT NEGATIVE:
+C        DROP THAT ROW (THE METHOD KEEPS U >= 0), REFINE ON THE REST
+  386    IF (DIAG.EQ.0.0D0) THEN                                        ! D160
+            KDROP = 0                                                   ! D160
+            T = 0.0D0                                                   ! D160
+            DO 387 K = 1, NACT                                          ! D160
+               IF (IACT(K).GT.NEQ .AND. U(K).LT.T) THEN                 ! D160
+                  T = U(K)                                              ! D160
+                  KDROP = K                                             ! D160
+               END IF                                                   ! D160
+  387       CONTINUE                                                    ! D160
+            IF (KDROP.GT.0) THEN                                        ! D160
+               ACTIVE(IACT(KDROP)) = .FALSE.                            ! D160
+               DO 388 K = KDROP, NACT-1                                 ! D160
+                  IACT(K) = IACT(K+1)                                   ! D160
+                  U(K) = U(K+1)                                         ! D160
+  388          CONTINUE                                                 ! D160
+               NACT = NACT - 1                                          ! D160
+               CALL QPRFN (NVAR, NACT, IACT, SGN, A, LDA, B, L, MAXV,   ! D160
+     *                     GTOL, SOL, U, GN, M, MAXC, RHS, R, W, H, LDH,! D160
+     *                     G, DIAG, STOL, Z)                            ! D160
+               GO TO 386                                                ! D160
+            END IF                                                      ! D160
+         END IF                                                         ! D160
          GO TO 200
       END IF
 C     PARTIAL STEP: DROP THE ACTIVE CONSTRAINT KDROP, STAY WITH P
@@ -469,17 +506,24 @@ C     (H = L L') AND M = N'H^-1N.  E IS A WORK ARRAY OF LENGTH NVAR.
       END
 C
       SUBROUTINE QPRFN (NVAR, NACT, IACT, SGN, A, LDA, B, L, LDL, GTOL,
-     *                  SOL, U, GN, M, LDM, RHS, R, W)
+     *                  SOL, U, GN, M, LDM, RHS, R, W, H, LDH, G, DIAG, ! D160
+     *                  STOL, E)                                        ! D160
 C     WHERE AN ACTIVE ROW MISSES ITS BOUND BY MORE THAN GTOL OF ITS SIZE
 C     (ROUNDING IN THE STEPS, E.G. FROM AN UNCONSTRAINED MINIMUM FAR OUT),
-C     AT MOST TWO SWEEPS OF  SOL = SOL + GN Y,  U = U + Y  WITH
-C     (N'H^-1N) Y = -(N'SOL - B): BACK ON THE ACTIVE ROWS, AND H SOL + G
-C     = N U STILL HOLDS (ISSUE 22).  GN, M, RHS, R AND W: QPSOLV'S WORK.
+C     OR (D160) A COMPONENT OF THE STATIONARITY RESIDUAL E = (H+DIAG I)
+C     SOL + G - N U BY MORE THAN STOL OF THE SIZE OF ITS TERMS, AT MOST
+C     TWO SWEEPS OF REFINEMENT OF THE KKT SYSTEM ON THE ACTIVE SET:
+C     SOL = SOL + GN Y - (H+DIAG I)^-1 E,  U = U + Y,  (N'H^-1N) Y =
+C     N'(H+DIAG I)^-1 E - (N'SOL - B).  WITHOUT A STATIONARITY MISS E IS
+C     NOT USED (SOL = SOL + GN Y, AS ISSUE 22 HAD IT).  GN, M, RHS, R, W
+C     AND E: QPSOLV'S WORK.
       INTEGER NVAR, NACT, IACT(*), LDA, LDL, LDM, J, K, SWEEP, INFO
+      INTEGER LDH, I                                                    ! D160
       DOUBLE PRECISION SGN(*), A(LDA,*), B(*), L(LDL,*), GTOL, SOL(*),
      *                 U(*), GN(LDL,*), M(LDM,*), RHS(*), R(*), W(*),
      *                 S, SIZE
-      LOGICAL OFF
+      DOUBLE PRECISION H(LDH,*), G(*), DIAG, STOL, E(*), T, HJI         ! D160
+      LOGICAL OFF, STAT                                                 ! D160
       DO 40 SWEEP = 1, 2
          OFF = .FALSE.
          DO 10 K = 1, NACT
@@ -487,13 +531,42 @@ C     = N U STILL HOLDS (ISSUE 22).  GN, M, RHS, R AND W: QPSOLV'S WORK.
             RHS(K) = -(SGN(IACT(K))*S)
             IF (ABS(S).GT.GTOL*SIZE) OFF = .TRUE.
    10    CONTINUE
-         IF (.NOT.OFF) RETURN
+         STAT = .TRUE.                                                  ! D160
+         DO 14 J = 1, NVAR                                              ! D160
+            S = G(J) + DIAG*SOL(J)                                      ! D160
+            SIZE = ABS(G(J)) + ABS(DIAG*SOL(J))                         ! D160
+            DO 12 I = 1, NVAR                                           ! D160
+               IF (J.GE.I) HJI = H(J,I)                                 ! D160
+               IF (J.LT.I) HJI = H(I,J)                                 ! D160
+               S = S + HJI*SOL(I)                                       ! D160
+               SIZE = SIZE + ABS(HJI*SOL(I))                            ! D160
+   12       CONTINUE                                                    ! D160
+            DO 13 K = 1, NACT                                           ! D160
+               T = SGN(IACT(K))*A(IACT(K),J)*U(K)                       ! D160
+               S = S - T                                                ! D160
+               SIZE = SIZE + ABS(T)                                     ! D160
+   13       CONTINUE                                                    ! D160
+            E(J) = S                                                    ! D160
+            IF (ABS(S).GT.STOL*SIZE) STAT = .FALSE.                     ! D160
+   14    CONTINUE                                                       ! D160
+         IF (.NOT.OFF .AND. STAT) RETURN                                ! D160
          CALL QPNMAT (NVAR, NACT, IACT, SGN, A, LDA, L, LDL, GN, M, LDM,
      *                W)
+         IF (.NOT.STAT) THEN                                            ! D160
+            CALL QPCHSL (NVAR, L, LDL, E, W)                            ! D160
+            DO 18 K = 1, NACT                                           ! D160
+               S = RHS(K)                                               ! D160
+               DO 17 J = 1, NVAR                                        ! D160
+                  S = S + SGN(IACT(K))*A(IACT(K),J)*W(J)                ! D160
+   17          CONTINUE                                                 ! D160
+               RHS(K) = S                                               ! D160
+   18       CONTINUE                                                    ! D160
+         END IF                                                         ! D160
          CALL QPGAUS (NACT, M, LDM, RHS, R, INFO)
          IF (INFO.NE.0) RETURN
          DO 30 J = 1, NVAR
             S = SOL(J)
+            IF (.NOT.STAT) S = S - W(J)                                 ! D160
             DO 20 K = 1, NACT
                S = S + GN(J,K)*R(K)
    20       CONTINUE
@@ -505,6 +578,52 @@ C     = N U STILL HOLDS (ISSUE 22).  GN, M, RHS, R AND W: QPSOLV'S WORK.
    40 CONTINUE
       RETURN
       END
+C
+      LOGICAL FUNCTION QPINDP (NVAR, A, LDA, IACT, NACT, P, GRAM, LDG,  ! D160
+     *                         RHS, C)                                  ! D160
+C     D160: IS ROW P'S NORMAL INDEPENDENT OF THE ACTIVE NORMALS, IN THE
+C     PLAIN (EUCLIDEAN) SENSE?  THE LEAST-SQUARES RESIDUAL RHO = N+ - N C,
+C     (N'N) C = N'N+, STANDS IN SOME COMPONENT ABOVE 1E3 EPS OF THE
+C     LARGEST SIZE OF ITS TERMS; NOT WHERE N'N IS SINGULAR.  WHERE H IS
+C     ILL-CONDITIONED ZN FALLS BELOW 1E3 EPS ZR FOR INDEPENDENT ROWS TOO
+C     (ZR GROWS WITH COND(H)), WHILE A DEPENDENT NORMAL (A REPEATED OR
+C     SUMMED ROW, MORE ROWS THAN VARIABLES) LEAVES RHO AT ITS ROUNDING.
+      INTEGER NVAR, LDA, IACT(*), NACT, P, LDG, I, J, K, INFO           ! D160
+      DOUBLE PRECISION A(LDA,*), GRAM(LDG,*), RHS(*), C(*), S, T, SIZE, ! D160
+     *                 BIG, SCL                                         ! D160
+      DO 20 I = 1, NACT                                                 ! D160
+         DO 10 K = 1, NACT                                              ! D160
+            S = 0.0D0                                                   ! D160
+            DO 5 J = 1, NVAR                                            ! D160
+               S = S + A(IACT(I),J)*A(IACT(K),J)                        ! D160
+    5       CONTINUE                                                    ! D160
+            GRAM(I,K) = S                                               ! D160
+   10    CONTINUE                                                       ! D160
+         S = 0.0D0                                                      ! D160
+         DO 15 J = 1, NVAR                                              ! D160
+            S = S + A(IACT(I),J)*A(P,J)                                 ! D160
+   15    CONTINUE                                                       ! D160
+         RHS(I) = S                                                     ! D160
+   20 CONTINUE                                                          ! D160
+      QPINDP = .FALSE.                                                  ! D160
+      CALL QPGAUS (NACT, GRAM, LDG, RHS, C, INFO)                       ! D160
+      IF (INFO.NE.0) RETURN                                             ! D160
+      BIG = 0.0D0                                                       ! D160
+      SCL = 0.0D0                                                       ! D160
+      DO 40 J = 1, NVAR                                                 ! D160
+         S = A(P,J)                                                     ! D160
+         SIZE = ABS(A(P,J))                                             ! D160
+         DO 30 K = 1, NACT                                              ! D160
+            T = A(IACT(K),J)*C(K)                                       ! D160
+            S = S - T                                                   ! D160
+            SIZE = SIZE + ABS(T)                                        ! D160
+   30    CONTINUE                                                       ! D160
+         BIG = MAX(BIG, ABS(S))                                         ! D160
+         SCL = MAX(SCL, SIZE)                                           ! D160
+   40 CONTINUE                                                          ! D160
+      QPINDP = BIG.GT.1.0D3*EPSILON(1.0D0)*SCL                          ! D160
+      RETURN                                                            ! D160
+      END                                                               ! D160
 C
       DOUBLE PRECISION FUNCTION QPKAPP (N, H, LDH, DIAG, L, LDL, E, Y)
 C     TRACE(H + DIAG*I) * TRACE((H + DIAG*I)^-1) FROM THE CHOLESKY

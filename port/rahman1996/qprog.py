@@ -224,10 +224,14 @@ def _nmat(low, a, sgn, iact, nact, gn, m, e):
 
 
 @njit(cache=True)
-def _refine(low, a, b, sgn, iact, nact, gtol, sol, u, gn, m, rhs, r, w):
-    """QPRFN: where an active row misses its bound by more than gtol of its size (rounding
-    in the steps), at most two sweeps of sol += GN y, u += y with (N'H^-1N) y = -(N'sol - b):
-    back on the active rows, H sol + g = N u still holding."""
+def _refine(h, g, diag, low, a, b, sgn, iact, nact, gtol, stol, sol, u, gn, m, rhs, r, w, e):
+    """QPRFN: where an active row misses its bound by more than gtol of its size, or a
+    component of the stationarity residual e = (H + DIAG I) sol + g - N u by more than stol of
+    the size of its terms (D160: the steps' rounding, from far out where H is ill-conditioned;
+    stol = 1e3 eps where H is solved as given, gtol where DIAG > 0, which leaves the CSSP's
+    QPs as they were), at most two sweeps of refinement of the KKT system on the active set:
+    sol += GN y - (H + DIAG I)^-1 e, u += y, (N'H^-1N) y = N'(H + DIAG I)^-1 e - (N'sol - b).
+    Without a stationarity miss e is not used (sol += GN y, as D050 had it)."""
     nvar = sol.shape[0]
     for _ in range(2):                                    # DO 40 SWEEP
         off = False
@@ -236,18 +240,78 @@ def _refine(low, a, b, sgn, iact, nact, gtol, sol, u, gn, m, rhs, r, w):
             rhs[k] = -(sgn[iact[k]] * s)
             if abs(s) > gtol * size:
                 off = True
-        if not off:
+        stationary = True
+        for j in range(nvar):                             # DO 14
+            s = g[j] + diag * sol[j]
+            size = abs(g[j]) + abs(diag * sol[j])
+            for i in range(nvar):                         # DO 12
+                hji = h[j, i] if j >= i else h[i, j]
+                s = s + hji * sol[i]
+                size = size + abs(hji * sol[i])
+            for k in range(nact):                         # DO 13
+                t = sgn[iact[k]] * a[iact[k], j] * u[k]
+                s = s - t
+                size = size + abs(t)
+            e[j] = s
+            if abs(s) > stol * size:
+                stationary = False
+        if not off and stationary:
             return
         _nmat(low, a, sgn, iact, nact, gn, m, w)
+        if not stationary:
+            _chsl(low, e, w)                              # W = (H + DIAG I)^-1 E
+            for k in range(nact):                         # DO 18
+                s = rhs[k]
+                for j in range(nvar):                     # DO 17
+                    s = s + sgn[iact[k]] * a[iact[k], j] * w[j]
+                rhs[k] = s
         if _gaus(nact, m, rhs, r) != 0:
             return
         for j in range(nvar):                             # DO 30
             s = sol[j]
+            if not stationary:
+                s = s - w[j]
             for k in range(nact):                         # DO 20
                 s = s + gn[k, j] * r[k]
             sol[j] = s
         for k in range(nact):                             # DO 35
             u[k] = u[k] + r[k]
+
+
+@njit(cache=True)
+def _independent(a, iact, nact, p, gram, rhs, c):
+    """QPINDP (D160): is row p's normal independent of the active normals, in the plain
+    (Euclidean) sense?  The least-squares residual rho = n+ - N c, (N'N) c = N'n+, stands in
+    some component above 1e3 eps of the largest size of its terms (|n+_j| + sum |N_jk c_k|);
+    not where N'N is singular.  Where H is ill-conditioned ZN falls below 1e3 eps ZR for
+    independent rows too (ZR grows with cond(H), ZN with the reduced problem's), while a
+    dependent normal (a repeated or summed row, more rows than variables) leaves rho at its
+    rounding.  ``gram``, ``rhs``, ``c``: work."""
+    nvar = a.shape[1]
+    for i in range(nact):                                 # DO 20
+        for k in range(nact):                             # DO 10
+            s = 0.0
+            for j in range(nvar):                         # DO 5
+                s = s + a[iact[i], j] * a[iact[k], j]
+            gram[i, k] = s
+        s = 0.0
+        for j in range(nvar):                             # DO 15
+            s = s + a[iact[i], j] * a[p, j]
+        rhs[i] = s
+    if _gaus(nact, gram, rhs, c) != 0:
+        return False
+    big = 0.0
+    scale = 0.0
+    for j in range(nvar):                                 # DO 40
+        s = a[p, j]
+        size = abs(a[p, j])
+        for k in range(nact):                             # DO 30
+            t = a[iact[k], j] * c[k]
+            s = s - t
+            size = size + abs(t)
+        big = _max(big, abs(s))
+        scale = _max(scale, size)
+    return big > 1.0e3 * EPS * scale
 
 
 @njit(cache=True)
@@ -447,6 +511,10 @@ def _solve(h, g, a, b, neq):
     # how far a solved sol may miss a row, relative to its size: 1e3 eps, and 8 eps kappa
     # for the rounding of the method where H + DIAG I is ill-conditioned (D050)
     gtol = EPS * (1.0e3 + 8.0 * _kappa(h, diag, low, w, z))
+    # how far the stationarity may miss before QPRFN refines it (D160)
+    stol = gtol
+    if diag == 0.0:
+        stol = 1.0e3 * EPS
     # ---- unconstrained minimum: SOL = -(H+DIAG I)^-1 G (140)
     rhs = np.empty(max(nvar, ncon))
     for i in range(nvar):                                 # DO 140
@@ -467,6 +535,7 @@ def _solve(h, g, a, b, neq):
     m = np.empty((ncon, ncon))
     r = np.empty(ncon)
     u = np.empty(ncon)
+    c = np.empty(ncon)
     maxit = 50 * (ncon + nvar) + 100
     it = 0
     while True:
@@ -543,6 +612,8 @@ def _solve(h, g, a, b, neq):
             t2 = -1.0
             if zn > 1.0e3 * EPS * zr:
                 t2 = -(s / zn)
+            elif zn > 0.0 and nact > 0 and _independent(a, iact, nact, p, m, rhs, c):
+                t2 = -(s / zn)                            # D160: ZN below its rounding's scale, n+ independent
             if t2 < 0.0 and uplus == 0.0 and -s <= gtol * size:
                 held[p] = True                            # a dependent row that holds to GTOL (D162)
                 break                                     # GO TO 200
@@ -569,7 +640,24 @@ def _solve(h, g, a, b, neq):
                 u[nact] = uplus
                 nact += 1
                 active[p] = True
-                _refine(low, a, b, sgn, iact, nact, gtol, sol, u, gn, m, rhs, r, w)
+                _refine(h, g, diag, low, a, b, sgn, iact, nact, gtol, stol, sol, u, gn, m, rhs, r, w, z)
+                while diag == 0.0:
+                    # D160: an inequality's multiplier the refinement left negative: drop that
+                    # row (the method keeps u >= 0) and refine on the rest
+                    kdrop = -1
+                    t = 0.0
+                    for k in range(nact):                 # DO 387
+                        if iact[k] >= neq and u[k] < t:
+                            t = u[k]
+                            kdrop = k
+                    if kdrop < 0:
+                        break
+                    active[iact[kdrop]] = False
+                    for k in range(kdrop, nact - 1):      # DO 388
+                        iact[k] = iact[k + 1]
+                        u[k] = u[k + 1]
+                    nact -= 1
+                    _refine(h, g, diag, low, a, b, sgn, iact, nact, gtol, stol, sol, u, gn, m, rhs, r, w, z)
                 break                                     # GO TO 200
             # partial step: drop the active constraint KDROP, stay with P
             active[iact[kdrop]] = False
