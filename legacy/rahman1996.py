@@ -24,9 +24,10 @@ import warnings
 
 import numpy as np
 
-from ..checks import (finite_matrix, listing_condition, masses, qp_arguments, refuse_singular_position,
-                      slider_crank)
+from ..checks import (cssp_speed, finite_matrix, listing_condition, masses, qp_arguments,
+                      refuse_singular_position, slider_crank)
 from ..errors import ConvergenceError, QPError, SingularPositionError
+from ..port.rahman1996 import balance as _balance
 from ..port.rahman1996.qprog import answer, precision_warning
 from . import _rahman1996 as _f
 
@@ -58,11 +59,14 @@ def cssp(a1=2.0, a2=8.0, a4=1.0, alpha4_deg=250.0, s1=0.4, rpm=3000.0, solution=
     rad, s4 in in: the Newton's converged joint variables, D053).
     """
     p = slider_crank(a1, a2, a4, alpha4_deg, s1, rpm)
+    cssp_speed(p["rpm"])
     sol_in = np.zeros(9, dtype=np.float32) if solution is None else masses("solution", solution).astype(np.float32)
     qout = np.full((5, 37, 2), np.nan, order="F")      # NaN where the program computes no position
     with FORTRAN_LOCK:
+        _f.qpwarn_get(1)                                   # clear QPROG's REAL*4 count (D161)
         table, sol51, inert, hout, diag, istat, fail_deg, qout, sol = _f.cssp(
             p["a1"], p["a2"], p["a4"], p["alpha4_deg"], p["s1"], p["rpm"], int(solution is not None), sol_in, qout)
+        unsure, worst = _f.qpwarn_get(1)
     positions = qout.transpose(2, 1, 0)
     refuse_singular_position(np.tile(10.0 * np.arange(37), 2),
                              listing_condition(positions[..., 0], positions[..., 1], positions[..., 2]))
@@ -76,6 +80,8 @@ def cssp(a1=2.0, a2=8.0, a4=1.0, alpha4_deg=250.0, s1=0.4, rpm=3000.0, solution=
     if bad.any():
         raise SingularPositionError("CSSP: a non-finite value in the tables",
                                     float(10 * np.argmax(bad)))
+    if unsure:
+        warnings.warn(_balance.precision_warning(float(worst)), stacklevel=2)
     return {"table": table, "solution": sol.astype(np.float64), "solution_table51": sol51.astype(np.float64),
             "inertia": inert,
             "hessian": hout.astype(np.float64), "diag": float(diag),
