@@ -105,7 +105,10 @@ C     AND ALAMDA ARE SCALED BACK; SOL IS THE SAME FOR BOTH PROBLEMS.
       DOUBLE PRECISION AS(MAXC,MAXV), BS(MAXC), GS(MAXV), HS(MAXV,MAXV),
      *                 BIG, QPHMAX
       INTEGER I, J, K, KH, IRS(MAXC), ISTAT
+      DOUBLE PRECISION QCOND, QC, DZ, SOLZ(MAXV), ALAMZ(MAXC)           ! D163
+      INTEGER NACTZ, IACTZ(MAXC)                                        ! D163
       COMMON /QPSTAT/ ISTAT
+      COMMON /QPCND/ QCOND                                              ! D163
       NACT = 0
       IF (NVAR.LT.1 .OR. NVAR.GT.MAXV .OR. NCON.LT.0 .OR.
      *    NCON.GT.MAXC .OR. NEQ.LT.0 .OR. NEQ.GT.NCON .OR.
@@ -140,7 +143,20 @@ C     AND ALAMDA ARE SCALED BACK; SOL IS THE SAME FOR BOTH PROBLEMS.
    40    CONTINUE
    45 CONTINUE
       CALL QPSOLV (NVAR, NCON, NEQ, AS, MAXC, BS, GS, HS, MAXV, DIAG,
-     *             SOL, NACT, IACT, ALAMDA)
+     *             SOL, NACT, IACT, ALAMDA, .FALSE.)                    ! D163
+C     D163: WHERE H WAS SHIFTED, THE RECESSION PROBLEM (B = 0: ITS ROWS
+C     ARE THE DIRECTIONS ALONG WHICH EVERY ROW STAYS FEASIBLE) DECIDES
+C     WHETHER THE PROBLEM IS UNBOUNDED BELOW (QPSOLV, QPUNBD): STATUS 5
+      IF (ISTAT.EQ.0 .AND. DIAG.GT.0.0D0) THEN                          ! D163
+         QC = QCOND                                                     ! D163
+         DO 47 I = 1, NCON                                              ! D163
+            BS(I) = 0.0D0                                               ! D163
+   47    CONTINUE                                                       ! D163
+         CALL QPSOLV (NVAR, NCON, NEQ, AS, MAXC, BS, GS, HS, MAXV, DZ,  ! D163
+     *                SOLZ, NACTZ, IACTZ, ALAMZ, .TRUE.)                ! D163
+         IF (ISTAT.NE.5) ISTAT = 0                                      ! D163
+         QCOND = QC                                                     ! D163
+      END IF                                                            ! D163
       DIAG = SCALE(DIAG, 2*KH)
       DO 50 K = 1, NACT
          ALAMDA(K) = SCALE(ALAMDA(K), 2*KH + IRS(IACT(K)))
@@ -149,7 +165,7 @@ C     AND ALAMDA ARE SCALED BACK; SOL IS THE SAME FOR BOTH PROBLEMS.
       END
 C
       SUBROUTINE QPSOLV (NVAR, NCON, NEQ, A, LDA, B, G, H, LDH, DIAG,
-     *                   SOL, NACT, IACT, ALAMDA)
+     *                   SOL, NACT, IACT, ALAMDA, RECESS)               ! D163
 C     THE GOLDFARB-IDNANI METHOD ON THE SCALED PROBLEM (SEE DQPROG).
 C     ISSUE 22 (A VIOLATED ROW DEPENDENT ON THE ACTIVE ONES WAS ADDED AS
 C     IF INDEPENDENT, AND INFEASIBLE PROBLEMS RETURNED AS SOLVED): Z = 0
@@ -159,8 +175,10 @@ C     THAT HOLDS IS HELD INSTEAD OF REFUSED, A FULL STEP PROJECTS SOL
 C     BACK ONTO THE ACTIVE ROWS WHERE ROUNDING LEFT THEM OFF (QPRFN),
 C     AND NO SOL IS RETURNED THAT MISSES A ROW BY MORE THAN GTOL.
 C     ISSUE 31: A DEFINITE H IS SOLVED AS GIVEN (D160), A ROW THAT
-C     DEPENDS ON THE ACTIVE ONES AND HOLDS TO GTOL IS HELD (D162), AN
-C     UNBOUNDED PROBLEM IS STATUS 5 (D163), AND QCOND IS LEFT (D160).
+C     DEPENDS ON THE ACTIVE ONES AND HOLDS TO GTOL IS HELD (D162), AND
+C     QCOND IS LEFT (D160).  WHERE DIAG > 0, STATUS 5 WHERE QPUNBD
+C     CERTIFIES FROM SOL THAT THE PROBLEM IS UNBOUNDED (D163); RECESS:
+C     THIS IS THE RECESSION PROBLEM (B = 0), SOLVED FOR THAT ALONE.
       INTEGER NVAR, NCON, NEQ, LDA, LDH, NACT, IACT(*)
       DOUBLE PRECISION A(LDA,*), B(*), G(*), H(LDH,*), DIAG, SOL(*),
      *                 ALAMDA(*)
@@ -182,6 +200,7 @@ C     HELD(I): ROW I HOLDS AND DEPENDS ON THE ACTIVE ROWS; NOT ADDED,
 C     AND NOT PICKED AGAIN UNTIL SOL MOVES
       LOGICAL ACTIVE(MAXC), HELD(MAXC), DONE
       LOGICAL DEFNT, QPUNBD, QPINDP                                     ! D160
+      LOGICAL RECESS                                                    ! D163
       COMMON /QPSTAT/ ISTAT
       COMMON /QPCND/ QCOND                                              ! D160
       EPS = EPSILON(1.0D0)
@@ -449,7 +468,6 @@ C     THE ORIGINAL CONSTRAINTS' SENSE ----
             RETURN
          END IF
   905 CONTINUE
-C     D163: WHERE H WAS SHIFTED, NO ANSWER FOR AN UNBOUNDED PROBLEM
       IF (DIAG.GT.0.0D0) THEN                                           ! D163
          IF (QPUNBD(NVAR, NCON, NEQ, A, LDA, G, H, LDH, L, MAXV, SOL,   ! D163
      *              W, Z)) THEN                                         ! D163
@@ -457,6 +475,7 @@ C     D163: WHERE H WAS SHIFTED, NO ANSWER FOR AN UNBOUNDED PROBLEM
             RETURN                                                      ! D163
          END IF                                                         ! D163
       END IF                                                            ! D163
+      IF (RECESS) RETURN                                                ! D163
       QCOND = QPCOND(NVAR, NACT, IACT, SGN, A, LDA, H, LDH, L, MAXV,    ! D160
      *               GN, M, MC, MAXC, RHS, R, W, Z)                     ! D160
       DO 910 K = 1, NACT
@@ -720,14 +739,17 @@ C     MC, RHS, R, Y, E: WORK.  FREE OF H'S UNITS AND OF THE ROWS' SCALES.
 C
       LOGICAL FUNCTION QPUNBD (NVAR, NCON, NEQ, A, LDA, G, H, LDH, L,   ! D163
      *                         LDL, SOL, D, E)                          ! D163
-C     D163: IS THE PROBLEM UNBOUNDED BELOW?  WHERE DIAG > 0 THE
-C     REGULARIZED ANSWER SOL LIES FAR OUT ALONG H'S NULL DIRECTIONS IF
-C     THE OBJECTIVE FALLS ALONG THEM: D = SOL - (H+DIAG I)^-1 H SOL KEEPS
-C     THAT PART AND DAMPS THE REST BY DIAG/(LAMBDA+DIAG).  D CERTIFIES
-C     IT: EVERY ROW STAYS FEASIBLE ALONG D (A(I,.)D = 0 FOR AN EQUALITY,
+C     D163: IS THE PROBLEM UNBOUNDED BELOW?  SOL IS A REGULARIZED
+C     ANSWER, OF THE PROBLEM OR OF ITS RECESSION PROBLEM (B = 0, WHOSE
+C     ANSWER DOES NOT DEPEND ON B'S SCALE): FAR OUT ALONG H'S NULL
+C     DIRECTIONS IF THE OBJECTIVE FALLS ALONG A FEASIBLE ONE.  D = SOL -
+C     (H+DIAG I)^-1 H SOL KEEPS THAT PART AND DAMPS THE REST BY
+C     DIAG/(LAMBDA+DIAG).  D CERTIFIES IT: EVERY ROW
+C     STAYS FEASIBLE ALONG D (A(I,.)D = 0 FOR AN EQUALITY,
 C     >= 0 FOR AN INEQUALITY), AND THE OBJECTIVE FALLS WITHOUT BOUND: H D
 C     = 0 AND G'D < 0, OR D'H D < 0.  EACH TO TAU = SQRT(EPS) OF THE
-C     SIZE OF ITS TERMS (H D OF MAX|H(I,J)| MAX|D(J)|, D'H D OF
+C     PROBLEM'S SCALE ALONG D (A(I,.)D OF SUM |A(I,J)| MAX|D(J)|, G'D OF
+C     SUM |G(J)| MAX|D(J)|, H D OF MAX|H(I,J)| MAX|D(J)|, D'H D OF
 C     MAX|H(I,J)| D'D): THE DIAG RULE'S OWN LEVEL, WHICH TAKES A
 C     CURVATURE BELOW IT FOR NONE.  D, E: WORK.
       INTEGER NVAR, NCON, NEQ, LDA, LDH, LDL, I, J                      ! D163
@@ -748,7 +770,7 @@ C     CURVATURE BELOW IT FOR NONE.  D, E: WORK.
          DMAX = MAX(DMAX, ABS(D(J)))                                    ! D163
          DD = DD + D(J)*D(J)                                            ! D163
          GD = GD + G(J)*D(J)                                            ! D163
-         GS = GS + ABS(G(J)*D(J))                                       ! D163
+         GS = GS + ABS(G(J))                                            ! D163
    10 CONTINUE                                                          ! D163
       IF (DMAX.EQ.0.0D0) RETURN                                         ! D163
       HMAX = QPHMAX(NVAR, H, LDH)                                       ! D163
@@ -759,17 +781,17 @@ C     CURVATURE BELOW IT FOR NONE.  D, E: WORK.
          IF (ABS(E(I)).GT.TAU*HMAX*DMAX) FLAT = .FALSE.                 ! D163
          CURV = CURV + D(I)*E(I)                                        ! D163
    20 CONTINUE                                                          ! D163
-      IF (.NOT.((FLAT .AND. GD.LT.-TAU*GS) .OR.                         ! D163
+      IF (.NOT.((FLAT .AND. GD.LT.-TAU*GS*DMAX) .OR.                    ! D163
      *          CURV.LT.-TAU*HMAX*DD)) RETURN                           ! D163
       DO 40 I = 1, NCON                                                 ! D163
          S = 0.0D0                                                      ! D163
          SIZE = 0.0D0                                                   ! D163
          DO 30 J = 1, NVAR                                              ! D163
             S = S + A(I,J)*D(J)                                         ! D163
-            SIZE = SIZE + ABS(A(I,J)*D(J))                              ! D163
+            SIZE = SIZE + ABS(A(I,J))                                   ! D163
    30    CONTINUE                                                       ! D163
          IF (I.LE.NEQ) S = -ABS(S)                                      ! D163
-         IF (S.LT.-TAU*SIZE) RETURN                                     ! D163
+         IF (S.LT.-TAU*SIZE*DMAX) RETURN                                ! D163
    40 CONTINUE                                                          ! D163
       QPUNBD = .TRUE.                                                   ! D163
       RETURN                                                            ! D163

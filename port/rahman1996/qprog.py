@@ -387,13 +387,16 @@ def _condition(h, low, a, sgn, iact, nact, gn, m, rhs, r, y, e):
 
 @njit(cache=True)
 def _unbounded(h, g, a, neq, low, sol, d, e):
-    """QPUNBD (D163): is the problem unbounded below?  Where DIAG > 0 the regularized answer
-    lies far out along H's null directions if the objective falls along them:
-    d = sol - (H + DIAG I)^-1 H sol keeps that part and damps the rest by DIAG/(lambda + DIAG).
+    """QPUNBD (D163): is the problem unbounded below?  ``sol`` is a regularized answer, of the
+    problem or of its recession problem (b = 0, whose answer does not depend on b's scale):
+    far out along H's null directions if the objective falls along a feasible one.
+    d = sol - (H + DIAG I)^-1 H sol keeps that part and damps the rest by
+    DIAG/(lambda + DIAG).
     d certifies it: every row stays feasible along d (a_i d = 0 for an equality, >= 0 for an
     inequality) and the objective falls without bound, H d = 0 and g'd < 0, or d'H d < 0;
-    each to tau = sqrt(eps) of the size of its terms (H d of max|H_ij| max|d_j|, d'H d of
-    max|H_ij| d'd): the DIAG rule's own level, which takes a curvature below it for none."""
+    each to tau = sqrt(eps) of the problem's scale along d (a_i d of sum_j |a_ij| max|d_j|,
+    g'd of sum_j |g_j| max|d_j|, H d of max|H_ij| max|d_j|, d'H d of max|H_ij| d'd): the DIAG
+    rule's own level, which takes a curvature below it for none."""
     nvar, ncon = sol.shape[0], a.shape[0]
     tau = math.sqrt(EPS)
     _hv(h, sol, e)
@@ -407,7 +410,7 @@ def _unbounded(h, g, a, neq, low, sol, d, e):
         dmax = _max(dmax, abs(d[j]))
         dd = dd + d[j] * d[j]
         gd = gd + g[j] * d[j]
-        gs = gs + abs(g[j] * d[j])
+        gs = gs + abs(g[j])
     if dmax == 0.0:
         return False
     hmax = _hmax(h)
@@ -418,17 +421,17 @@ def _unbounded(h, g, a, neq, low, sol, d, e):
         if abs(e[i]) > tau * hmax * dmax:
             flat = False
         curv = curv + d[i] * e[i]
-    if not ((flat and gd < -tau * gs) or curv < -tau * hmax * dd):
+    if not ((flat and gd < -tau * gs * dmax) or curv < -tau * hmax * dd):
         return False
     for i in range(ncon):                                 # DO 40
         s = 0.0
         size = 0.0
         for j in range(nvar):                             # DO 30
             s = s + a[i, j] * d[j]
-            size = size + abs(a[i, j] * d[j])
+            size = size + abs(a[i, j])
         if i < neq:
             s = -abs(s)
-        if s < -tau * size:
+        if s < -tau * size * dmax:
             return False
     return True
 
@@ -454,7 +457,11 @@ def _dqprog(h, g, a, b, neq):
             a_s[i, j] = math.ldexp(a[i, j], rows[i])      # SCALE(A(I,J), IRS(I))
         b_s[i] = math.ldexp(b[i], rows[i])
     h_s, g_s, kh = _scaled_objective(h, g)
-    status, diag, sol, nact, iact, alamda, cond = _solve(h_s, g_s, a_s, b_s, neq)
+    status, diag, sol, nact, iact, alamda, cond = _solve(h_s, g_s, a_s, b_s, neq, False)
+    if status == SOLVED and diag > 0.0:
+        # D163: the recession problem (b = 0) decides whether it is unbounded below
+        if _solve(h_s, g_s, a_s, np.zeros(ncon), neq, True)[0] == UNBOUNDED:
+            status = UNBOUNDED
     diag = math.ldexp(diag, 2 * kh)
     for k in range(nact):                                 # DO 50
         alamda[k] = math.ldexp(alamda[k], 2 * kh + rows[iact[k]])
@@ -490,9 +497,10 @@ def _shift(h, g):
 
 
 @njit(cache=True)
-def _solve(h, g, a, b, neq):
+def _solve(h, g, a, b, neq, recession):
     """QPSOLV, the Goldfarb-Idnani method on the scaled problem: (status, DIAG, SOL, NACT,
-    IACT, ALAMDA, QCOND).
+    IACT, ALAMDA, QCOND).  Where DIAG > 0, UNBOUNDED where ``_unbounded`` certifies it from
+    SOL (D163); ``recession``: this is the recession problem (b = 0), solved for that alone.
 
     Indices are 0-based (constraint i is the FORTRAN's I = i+1; P = 0 is p = -1).
     ``gn[k]`` holds the column GN(.,K).  Work arrays are sized by NCON (see the module
@@ -674,6 +682,8 @@ def _solve(h, g, a, b, neq):
             return MISSES, diag, sol, nact, iact, alamda, 0.0
     if diag > 0.0 and _unbounded(h, g, a, neq, low, sol, w, z):   # D163
         return UNBOUNDED, diag, sol, nact, iact, alamda, 0.0
+    if recession:
+        return SOLVED, diag, sol, nact, iact, alamda, 0.0
     cond = _condition(h, low, a, sgn, iact, nact, gn, m, rhs, r, w, z)   # D160
     for k in range(nact):                                 # DO 910
         alamda[k] = sgn[iact[k]] * u[k]
