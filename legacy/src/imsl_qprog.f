@@ -469,8 +469,8 @@ C     THE ORIGINAL CONSTRAINTS' SENSE ----
          END IF
   905 CONTINUE
       IF (DIAG.GT.0.0D0) THEN                                           ! D163
-         IF (QPUNBD(NVAR, NCON, NEQ, A, LDA, G, H, LDH, L, MAXV, SOL,   ! D163
-     *              W, Z)) THEN                                         ! D163
+         IF (QPUNBD(NVAR, NCON, NEQ, A, LDA, G, H, LDH, L, MAXV, SGN,   ! D163
+     *              IACT, NACT, SOL, GN, M, MAXC, RHS, R, W, Z)) THEN   ! D163
             ISTAT = 5                                                   ! D163
             RETURN                                                      ! D163
          END IF                                                         ! D163
@@ -738,35 +738,82 @@ C     MC, RHS, R, Y, E: WORK.  FREE OF H'S UNITS AND OF THE ROWS' SCALES.
       END                                                               ! D160
 C
       LOGICAL FUNCTION QPUNBD (NVAR, NCON, NEQ, A, LDA, G, H, LDH, L,   ! D163
-     *                         LDL, SOL, D, E)                          ! D163
+     *                         LDL, SGN, IACT, NACT, SOL, GN, M, LDM,   ! D163
+     *                         RHS, R, D, E)                            ! D163
 C     D163: IS THE PROBLEM UNBOUNDED BELOW?  SOL IS A REGULARIZED
 C     ANSWER, OF THE PROBLEM OR OF ITS RECESSION PROBLEM (B = 0, WHOSE
 C     ANSWER DOES NOT DEPEND ON B'S SCALE): FAR OUT ALONG H'S NULL
-C     DIRECTIONS IF THE OBJECTIVE FALLS ALONG A FEASIBLE ONE.  D = SOL -
-C     (H+DIAG I)^-1 H SOL KEEPS THAT PART AND DAMPS THE REST BY
-C     DIAG/(LAMBDA+DIAG).  D CERTIFIES IT: EVERY ROW
-C     STAYS FEASIBLE ALONG D (A(I,.)D = 0 FOR AN EQUALITY,
-C     >= 0 FOR AN INEQUALITY), AND THE OBJECTIVE FALLS WITHOUT BOUND: H D
-C     = 0 AND G'D < 0, OR D'H D < 0.  EACH TO TAU = SQRT(EPS) OF THE
+C     DIRECTIONS IF THE OBJECTIVE FALLS ALONG A FEASIBLE ONE.  TWO
+C     DIRECTIONS FROM IT, EACH DAMPING H'S RANGE BY DIAG/(LAMBDA+DIAG):
+C     D = P SOL, P = (H+DIAG I)^-1 - GN M^-1 GN' THE INVERSE ON THE
+C     DIRECTIONS THE ACTIVE ROWS LEAVE FREE (AS QPCOND), WHICH LEAVES
+C     THOSE ROWS WHERE THEY ARE; AND D = SOL - (H+DIAG I)^-1 H SOL, WHICH
+C     MAY LEAVE AN ACTIVE INEQUALITY (AS A DIRECTION OF NEGATIVE
+C     CURVATURE DOES).  EITHER CERTIFIES IT (QPRAY).  GN, M, RHS, R, D,
+C     E: WORK.
+      INTEGER NVAR, NCON, NEQ, LDA, LDH, LDL, LDM, IACT(*), NACT, J, K, ! D163
+     *        INFO                                                      ! D163
+      DOUBLE PRECISION A(LDA,*), G(*), H(LDH,*), L(LDL,*), SGN(*),      ! D163
+     *                 SOL(*), GN(LDL,*), M(LDM,*), RHS(*), R(*), D(*), ! D163
+     *                 E(*), S                                          ! D163
+      LOGICAL FREE, QPRAY                                               ! D163
+      QPUNBD = .TRUE.                                                   ! D163
+      CALL QPCHSL (NVAR, L, LDL, SOL, D)                                ! D163
+      FREE = .TRUE.                                                     ! D163
+      IF (NACT.GT.0) THEN                                               ! D163
+         CALL QPNMAT (NVAR, NACT, IACT, SGN, A, LDA, L, LDL, GN, M, LDM,! D163
+     *                E)                                                ! D163
+         DO 5 K = 1, NACT                                               ! D163
+            S = 0.0D0                                                   ! D163
+            DO 4 J = 1, NVAR                                            ! D163
+               S = S + GN(J,K)*SOL(J)                                   ! D163
+    4       CONTINUE                                                    ! D163
+            RHS(K) = S                                                  ! D163
+    5    CONTINUE                                                       ! D163
+         CALL QPGAUS (NACT, M, LDM, RHS, R, INFO)                       ! D163
+         FREE = INFO.EQ.0                                               ! D163
+         IF (FREE) THEN                                                 ! D163
+            DO 8 J = 1, NVAR                                            ! D163
+               S = D(J)                                                 ! D163
+               DO 7 K = 1, NACT                                         ! D163
+                  S = S - GN(J,K)*R(K)                                  ! D163
+    7          CONTINUE                                                 ! D163
+               D(J) = S                                                 ! D163
+    8       CONTINUE                                                    ! D163
+         END IF                                                         ! D163
+      END IF                                                            ! D163
+      IF (FREE) THEN                                                    ! D163
+         IF (QPRAY(NVAR, NCON, NEQ, A, LDA, G, H, LDH, D, E)) RETURN    ! D163
+      END IF                                                            ! D163
+      CALL QPHV (NVAR, H, LDH, SOL, E)                                  ! D163
+      CALL QPCHSL (NVAR, L, LDL, E, D)                                  ! D163
+      DO 9 J = 1, NVAR                                                  ! D163
+         D(J) = SOL(J) - D(J)                                           ! D163
+    9 CONTINUE                                                          ! D163
+      QPUNBD = QPRAY(NVAR, NCON, NEQ, A, LDA, G, H, LDH, D, E)          ! D163
+      RETURN                                                            ! D163
+      END                                                               ! D163
+C
+      LOGICAL FUNCTION QPRAY (NVAR, NCON, NEQ, A, LDA, G, H, LDH, D, E) ! D163
+C     D163: DOES D CERTIFY THAT THE PROBLEM IS UNBOUNDED BELOW?  EVERY
+C     ROW STAYS FEASIBLE ALONG D (A(I,.)D = 0 FOR AN EQUALITY, >= 0 FOR AN
+C     INEQUALITY), AND THE OBJECTIVE FALLS WITHOUT BOUND ALONG IT: H D = 0
+C     AND G'D < 0, OR D'H D < 0.  EACH TO TAU = SQRT(EPS) OF THE
 C     PROBLEM'S SCALE ALONG D (A(I,.)D OF SUM |A(I,J)| MAX|D(J)|, G'D OF
 C     SUM |G(J)| MAX|D(J)|, H D OF MAX|H(I,J)| MAX|D(J)|, D'H D OF
 C     MAX|H(I,J)| D'D): THE DIAG RULE'S OWN LEVEL, WHICH TAKES A
-C     CURVATURE BELOW IT FOR NONE.  D, E: WORK.
-      INTEGER NVAR, NCON, NEQ, LDA, LDH, LDL, I, J                      ! D163
-      DOUBLE PRECISION A(LDA,*), G(*), H(LDH,*), L(LDL,*), SOL(*),      ! D163
-     *                 D(*), E(*), TAU, HMAX, DMAX, DD, CURV, GD, GS,   ! D163
-     *                 S, SIZE, QPHMAX                                  ! D163
+C     CURVATURE BELOW IT FOR NONE.  E: WORK.
+      INTEGER NVAR, NCON, NEQ, LDA, LDH, I, J                           ! D163
+      DOUBLE PRECISION A(LDA,*), G(*), H(LDH,*), D(*), E(*), TAU, HMAX, ! D163
+     *                 DMAX, DD, CURV, GD, GS, S, SIZE, QPHMAX          ! D163
       LOGICAL FLAT                                                      ! D163
-      QPUNBD = .FALSE.                                                  ! D163
+      QPRAY = .FALSE.                                                   ! D163
       TAU = SQRT(EPSILON(1.0D0))                                        ! D163
-      CALL QPHV (NVAR, H, LDH, SOL, E)                                  ! D163
-      CALL QPCHSL (NVAR, L, LDL, E, D)                                  ! D163
       DMAX = 0.0D0                                                      ! D163
       DD = 0.0D0                                                        ! D163
       GD = 0.0D0                                                        ! D163
       GS = 0.0D0                                                        ! D163
       DO 10 J = 1, NVAR                                                 ! D163
-         D(J) = SOL(J) - D(J)                                           ! D163
          DMAX = MAX(DMAX, ABS(D(J)))                                    ! D163
          DD = DD + D(J)*D(J)                                            ! D163
          GD = GD + G(J)*D(J)                                            ! D163
@@ -793,7 +840,7 @@ C     CURVATURE BELOW IT FOR NONE.  D, E: WORK.
          IF (I.LE.NEQ) S = -ABS(S)                                      ! D163
          IF (S.LT.-TAU*SIZE*DMAX) RETURN                                ! D163
    40 CONTINUE                                                          ! D163
-      QPUNBD = .TRUE.                                                   ! D163
+      QPRAY = .TRUE.                                                    ! D163
       RETURN                                                            ! D163
       END                                                               ! D163
 C

@@ -386,27 +386,56 @@ def _condition(h, low, a, sgn, iact, nact, gn, m, rhs, r, y, e):
 
 
 @njit(cache=True)
-def _unbounded(h, g, a, neq, low, sol, d, e):
+def _unbounded(h, g, a, neq, low, sgn, iact, nact, sol, gn, m, rhs, r, d, e):
     """QPUNBD (D163): is the problem unbounded below?  ``sol`` is a regularized answer, of the
     problem or of its recession problem (b = 0, whose answer does not depend on b's scale):
-    far out along H's null directions if the objective falls along a feasible one.
-    d = sol - (H + DIAG I)^-1 H sol keeps that part and damps the rest by
-    DIAG/(lambda + DIAG).
-    d certifies it: every row stays feasible along d (a_i d = 0 for an equality, >= 0 for an
-    inequality) and the objective falls without bound, H d = 0 and g'd < 0, or d'H d < 0;
-    each to tau = sqrt(eps) of the problem's scale along d (a_i d of sum_j |a_ij| max|d_j|,
-    g'd of sum_j |g_j| max|d_j|, H d of max|H_ij| max|d_j|, d'H d of max|H_ij| d'd): the DIAG
-    rule's own level, which takes a curvature below it for none."""
-    nvar, ncon = sol.shape[0], a.shape[0]
-    tau = math.sqrt(EPS)
+    far out along H's null directions if the objective falls along a feasible one.  Two
+    directions from it, each damping H's range by DIAG/(lambda + DIAG): d = P sol, P =
+    (H + DIAG I)^-1 - GN M^-1 GN' the inverse on the directions the active rows leave free
+    (as ``_condition``), which leaves those rows where they are; and d = sol - (H + DIAG I)^-1
+    H sol, which may leave an active inequality (as a direction of negative curvature does).
+    Either certifies it (``_ray``).  ``gn``, ``m``, ``rhs``, ``r``, ``d``, ``e``: work."""
+    nvar = sol.shape[0]
+    _chsl(low, sol, d)
+    free = True
+    if nact > 0:
+        _nmat(low, a, sgn, iact, nact, gn, m, e)
+        for k in range(nact):                             # DO 5
+            s = 0.0
+            for j in range(nvar):                         # DO 4
+                s = s + gn[k, j] * sol[j]
+            rhs[k] = s
+        free = _gaus(nact, m, rhs, r) == 0
+        if free:
+            for j in range(nvar):                         # DO 8
+                s = d[j]
+                for k in range(nact):                     # DO 7
+                    s = s - gn[k, j] * r[k]
+                d[j] = s
+    if free and _ray(h, g, a, neq, d, e):
+        return True
     _hv(h, sol, e)
     _chsl(low, e, d)
+    for j in range(nvar):                                 # DO 9
+        d[j] = sol[j] - d[j]
+    return _ray(h, g, a, neq, d, e)
+
+
+@njit(cache=True)
+def _ray(h, g, a, neq, d, e):
+    """QPRAY (D163): does d certify that the problem is unbounded below?  Every row stays
+    feasible along d (a_i d = 0 for an equality, >= 0 for an inequality) and the objective
+    falls without bound along it, H d = 0 and g'd < 0, or d'H d < 0; each to tau = sqrt(eps)
+    of the problem's scale along d (a_i d of sum_j |a_ij| max|d_j|, g'd of sum_j |g_j|
+    max|d_j|, H d of max|H_ij| max|d_j|, d'H d of max|H_ij| d'd): the DIAG rule's own level,
+    which takes a curvature below it for none.  ``e``: work."""
+    nvar, ncon = d.shape[0], a.shape[0]
+    tau = math.sqrt(EPS)
     dmax = 0.0
     dd = 0.0
     gd = 0.0
     gs = 0.0
     for j in range(nvar):                                 # DO 10
-        d[j] = sol[j] - d[j]
         dmax = _max(dmax, abs(d[j]))
         dd = dd + d[j] * d[j]
         gd = gd + g[j] * d[j]
@@ -680,7 +709,7 @@ def _solve(h, g, a, b, neq, recession):
             s = -abs(s)
         if s < -gtol * size:
             return MISSES, diag, sol, nact, iact, alamda, 0.0
-    if diag > 0.0 and _unbounded(h, g, a, neq, low, sol, w, z):   # D163
+    if diag > 0.0 and _unbounded(h, g, a, neq, low, sgn, iact, nact, sol, gn, m, rhs, r, w, z):   # D163
         return UNBOUNDED, diag, sol, nact, iact, alamda, 0.0
     if recession:
         return SOLVED, diag, sol, nact, iact, alamda, 0.0
