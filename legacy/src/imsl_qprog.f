@@ -217,9 +217,10 @@ C     ---- CHOLESKY OF H + DIAG*I, RAISING DIAG WHERE A PIVOT FAILS ----
 C     TINY IS RELATIVE TO THE LARGEST |H(I,J)| READ (THE LOWER TRIANGLE;
 C     ISSUE 22: MAX |H(I,I)| LEFT A HUGE INDEFINITE H AN INFINITE DIAG)
 C     D160: FIRST WITH DIAG = 0 AND TINY = NVAR*EPS*SCALE, THE ROUNDING
-C     OF A PIVOT: WHERE EVERY PIVOT PASSES, H IS POSITIVE DEFINITE TO ITS
-C     ROUNDING AND SOLVED AS GIVEN (A CONDITION OF 1E14 INCLUDED); ELSE
-C     THE DIAG RULE RUNS AS BEFORE, FROM DIAG = 0 WITH SQRT(EPS)*SCALE
+C     OF A PIVOT: WHERE EVERY PIVOT PASSES (AND KAPPA, AFTER 130, STAYS
+C     WITHIN 1/(NVAR EPS)), H IS POSITIVE DEFINITE TO ITS ROUNDING AND
+C     SOLVED AS GIVEN (A CONDITION OF 1E14 INCLUDED); ELSE THE DIAG RULE
+C     RUNS AS BEFORE, FROM DIAG = 0 WITH SQRT(EPS)*SCALE
       SCALE = QPHMAX(NVAR, H, LDH)
       IF (SCALE.EQ.0.0D0) SCALE = 1.0D0
       DEFNT = .TRUE.                                                    ! D160
@@ -253,6 +254,16 @@ C           (ELSE STATEMENT 100 WOULD REPEAT THE SAME FACTORIZATION)
             L(I,J) = S/L(J,J)
   125    CONTINUE
   130 CONTINUE
+C     D160: AND KAPPA = TR(H) TR(H^-1) >= COND(H) WITHIN 1/(NVAR EPS): NO
+C     PERTURBATION OF H OF THE SIZE OF ITS ROUNDING MAKES IT SINGULAR
+      IF (DEFNT) THEN                                                   ! D160
+         IF (DBLE(NVAR)*EPS*QPKAPP(NVAR, H, LDH, DIAG, L, MAXV, W, Z)   ! D160
+     *       .GT.1.0D0) THEN                                            ! D160
+            DEFNT = .FALSE.                                             ! D160
+            TINY = SQRT(EPS)*SCALE                                      ! D160
+            GO TO 100                                                   ! D160
+         END IF                                                         ! D160
+      END IF                                                            ! D160
 C     GTOL: HOW FAR A SOLVED SOL MAY MISS A ROW, RELATIVE TO ITS SIZE:
 C     1E3 EPS, AND 8 EPS KAPPA FOR THE ROUNDING OF THE METHOD WHERE
 C     H + DIAG*I IS ILL-CONDITIONED (ISSUE 22)

@@ -98,9 +98,11 @@ def _hmax(h):
 @njit(cache=True)
 def _cholesky_shift(h, low):
     """Statements 5-130: L L' = H + DIAG*I.  First with DIAG = 0 and TINY = n eps max |H_ij|
-    (lower triangle), the rounding of a pivot: where every pivot passes, H is positive
-    definite to its rounding and DIAG = 0 (D160).  Else the DIAG rule, unchanged: from
-    DIAG = 0, DIAG raised where a pivot falls below TINY = sqrt(eps) max |H_ij|.
+    (lower triangle), the rounding of a pivot: where every pivot passes and kappa =
+    tr(H) tr(H^-1) (``_kappa``, >= cond(H)) stays within 1/(n eps), no perturbation of H of
+    the size of its rounding makes it singular: H is positive definite to its rounding and
+    DIAG = 0 (D160).  Else the DIAG rule, unchanged: from DIAG = 0, DIAG raised where a pivot
+    falls below TINY = sqrt(eps) max |H_ij|.
 
     Fills ``low`` (L, lower triangle) and returns DIAG.  A shortfall below DIAG's last bit
     takes the next number up (DNEW = NEAREST(DIAG, 1.0D0)).
@@ -136,6 +138,10 @@ def _cholesky_shift(h, low):
                 for k in range(j):                        # DO 120
                     s = s - low[i, k] * low[j, k]
                 low[i, j] = s / low[j, j]
+        if not restart and definite and float(n) * EPS * _kappa(h, 0.0, low, np.empty(n), np.empty(n)) > 1.0:
+            definite = False                              # kappa past 1/(n eps): the DIAG rule
+            tiny = math.sqrt(EPS) * scale
+            restart = True
         if not restart:
             return diag
 

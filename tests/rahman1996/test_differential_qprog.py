@@ -188,23 +188,23 @@ def problems(draw):
 
 @st.composite
 def unbounded_problems(draw):
-    """Unbounded below (D163): H positive semidefinite of rank r < n (0: H = 0), g with a part
-    -d0 along a null direction d0, feasible rows that do not stop d0 (inequalities turned so
-    that a_i d0 >= 0, equalities with d0 projected out of them), at scales 1e-6..1e8."""
-    n = draw(st.integers(1, 6))
-    r = draw(st.integers(0, n - 1))
-    m = draw(arrays(np.float64, (n, n), elements=UNIT)) + 2.0 * np.eye(n)
-    q = np.linalg.qr(m)[0]
-    h = q[:, :r] @ np.diag(draw(arrays(np.float64, r, elements=st.floats(0.1, 1.0)))) @ q[:, :r].T
-    d0 = q[:, r:] @ draw(arrays(np.float64, n - r, elements=st.floats(0.5, 1.0)))
-    g = -d0 + q[:, :r] @ draw(arrays(np.float64, r, elements=UNIT))
-    rows = draw(st.integers(0, 2 * n))
-    a = draw(arrays(np.float64, (rows, n), elements=UNIT))
-    neq = draw(st.integers(0, min(rows, n - 1)))
+    """Unbounded below (D163), from a seeded generator: H positive semidefinite of rank r < n
+    (0: H = 0; eigenvalues 0.1..1 on its range), g with a part -d0 along a null direction d0,
+    feasible rows that do not stop d0 (inequalities turned so that a_i d0 >= 0, equalities
+    with d0 projected out of them), the family scaled by 1e-6..1e8."""
+    rng = np.random.default_rng(draw(st.integers(0, 2 ** 32 - 1)))
+    n = int(rng.integers(1, 7))
+    r = int(rng.integers(0, n))
+    q = np.linalg.qr(rng.standard_normal((n, n)))[0]
+    h = q[:, :r] @ np.diag(rng.uniform(0.1, 1.0, r)) @ q[:, :r].T
+    d0 = q[:, r:] @ rng.uniform(0.5, 1.0, n - r)
+    g = -d0 + q[:, :r] @ rng.standard_normal(r)
+    rows = int(rng.integers(0, 2 * n + 1))
+    a = rng.standard_normal((rows, n))
+    neq = int(rng.integers(0, min(rows, n - 1) + 1))
     a[:neq] -= np.outer(a[:neq] @ d0, d0) / (d0 @ d0)
     a[neq:] *= np.where(a[neq:] @ d0 < 0, -1.0, 1.0)[:, None]
-    x0 = draw(arrays(np.float64, n, elements=UNIT))
-    b = a @ x0 - np.r_[np.zeros(neq), draw(arrays(np.float64, rows - neq, elements=st.sampled_from([0.0, 0.5])))]
+    b = a @ rng.standard_normal(n) - np.r_[np.zeros(neq), rng.choice([0.0, 0.5], rows - neq)]
     scale = draw(SCALE)
     event("unbounded")
     return h * scale, g * scale, (a if rows else None), (b if rows else None), neq
