@@ -5,12 +5,15 @@ D051) over its 37 crank positions, 0..360 deg in 10-deg steps, and returns every
 of Tables 5.1-5.7.  Defaults are the printed PARAMETERs (section 5.2).
 
 Units as printed: inch, lbf, second; masses lb*s^2/in; inertias lb*s^2*in; angles deg.
-Errors: ``ValueError`` for bad parameters, ``ConvergenceError`` when the printed
+Errors: ``ValueError`` for bad parameters (a crank speed below 2**-126 rpm included, D164),
+``ConvergenceError`` when the printed
 Newton-Raphson gives up after 150 iterations (the listing's STOP), ``SingularPositionError``
 when INVERSE meets an exactly zero pivot (its STOP) or, before any other failure, at the
 first position the program computed whose velocity equations have a condition number beyond
 ``linkrepro.checks.POSITION_CONDITION_LIMIT`` (the listing computes on there; register D150),
-``QPError`` when QPROG fails.
+``QPError`` when QPROG fails.  ``PrecisionWarning`` where QPROG's REAL*4 entry finds that
+single precision cannot carry the masses its Hessian determines (D161; QPROG's DIAG is by
+design there, D057, and not warned).
 
 Threads: the FORTRAN keeps static storage (-fno-automatic, COMMON /INVERR/, /QPSTAT/), and
 a status is read by a second call after the routine returns.  Every call sequence here holds

@@ -130,6 +130,8 @@ def balance(inputs: CsspInputs = CsspInputs(), quirks: CsspQuirks = CSSP_PRINTED
     With ``open_loop_model`` the listing's two passes run: OF accumulates over both, the
     tables use the first QP's answer, Table 5.1 the second's (as printed).  ``solution``
     (9 masses), if given, replaces every QP's answer, as the legacy face's (D055).
+    ValueError for a speed below 2**-126 rpm (D164); a ``PrecisionWarning`` where a QP's
+    masses are not carried by its Hessian's precision (D161, as the legacy face).
     """
     if not isinstance(inputs, CsspInputs):
         raise TypeError(f"inputs must be CsspInputs, got {type(inputs).__name__}")

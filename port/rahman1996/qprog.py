@@ -1,48 +1,59 @@
 """Our QPROG stand-in (legacy/src/imsl_qprog.f, DQPROG; register D050), ported: ``qprog``.
 
 Minimises g'x + x'Hx/2 subject to a[:neq] x = b[:neq] and a[neq:] x >= b[neq:] by the
-Goldfarb-Idnani dual active-set method as DQPROG writes it.  If H is not positive definite,
-H + DIAG*I is used, DIAG found by raising Cholesky pivots (``hessian_shift``, the DIAG rule:
-a pivot below sqrt(eps)*max|H_ij| raises DIAG by the shortfall and the factorization
-restarts).  Only the diagonal and the lower triangle of H are read, as in the FORTRAN.
+Goldfarb-Idnani dual active-set method as DQPROG writes it.  Only the diagonal and the lower
+triangle of H are read, as in the FORTRAN.
 
 Every operation is DQPROG's (with QPCHSL and QPGAUS) in DQPROG's order: sums run in the
 FORTRAN's loop order from the same start, the comparisons and tolerances are its own, MAX
 and MIN pick what gfortran's maxsd/minsd pick, and numba compiles without fastmath (no
 fused multiply-add, as the FORTRAN is built with -ffp-contract=off).  The result equals
-``linkrepro.legacy.rahman1996.qprog`` bit for bit (tests/test_differential_qprog.py).
+``linkrepro.legacy.rahman1996.qprog`` bit for bit, warnings included
+(tests/rahman1996/test_differential_qprog.py).
 
-Two faults of the stand-in, found by tests/test_differential_qprog.py, are mended in the
-FORTRAN and here alike (register D050): where raising DIAG by the shortfall would not change
-it in floating point (a negative H_jj, e.g. H = diag(-1.3, 5.3)), DIAG takes the next number
-up (the FORTRAN repeated GO TO 100 forever); and the active set can take numerically
-dependent normals before QPGAUS finds M singular, more than there are variables, so GN, M
-and RHS are sized by the constraints (the FORTRAN's, sized by the variables, overflowed).
-Non-finite a, b, h or g are ValueError and a non-finite solution or DIAG (overflow) is
-QPError, in both faces (``linkrepro.checks``).
+The contract (tests/rahman1996/test_qprog_contract.py, against 40-digit KKT solves, SciPy
+and numpy):
 
-Its tolerances were absolute (D050: a row scaled by 1e13, or H by 1e16, gave a wrong
-answer or "inconsistent"), so DQPROG now solves the problem in its own units (``_dqprog``):
-each row of a and b scaled by a power of two to a largest entry in [1, 2), H and g by a
-power of four to a largest |H_ij| in [1, 4), the Goldfarb-Idnani method (QPSOLV,
-``_solve``) run on that, DIAG and the multipliers scaled back.  A problem and its copies
-with rows, H and g scaled by any factors get the same answer up to rounding, and by powers
-of two (four for H) the same bits.
+- **Definite H, as given** (D160).  Where the Cholesky factorization of H has every pivot at
+  least n eps max|H_ij| and kappa = tr(H) tr(H^-1) (>= cond(H)) is at most 1/(n eps), no
+  perturbation of the size of H's rounding makes it singular: H is solved as given, DIAG =
+  0, to its conditioning (condition 1e8..1e14: errors within 0.3 cond eps, measured).
+  There QPRFN refines the stationarity as well as the active rows, a row whose multiplier
+  it leaves negative is dropped, and a new row's normal independent of the active ones in
+  the plain sense (``_independent``) is stepped to even where ZN lies below 1e3 eps ZR.
+- **DIAG** (D050).  Else H + DIAG I is used, DIAG found by the rule of statements 5-130
+  (``hessian_shift``: from 0, raised by the shortfall where a pivot falls below sqrt(eps)
+  max|H_ij|; a shortfall below DIAG's last bit takes the next number up): the answer is the
+  regularized problem's, min g'x + x'(H + DIAG I)x/2.  ``regularized`` says so and the
+  public ``qprog`` warns ``PrecisionWarning`` naming DIAG; ``solve`` does not, for a caller
+  that reads the field (the CSSP, whose H is singular by design: D057).
+- **What is warned** (D160, D161).  ``condition`` = tr(H) tr(P H P), P the inverse of
+  H + DIAG I on the directions the final active rows leave free: >= the condition of the
+  answer on the directions H determines (H's null directions, DIAG decides them, and those
+  the active rows pin count for nothing).  ``relative_error(h, result, unit)`` =
+  condition (unit + DIAG/tr H) bounds the answer's relative error there, ``unit`` the
+  rounding of H's data; ``qprog`` warns where it reaches 1 (unit eps), and the REAL*4 entry
+  counts the calls where it does with unit 2**-24 (COMMON /QPWARN/; the CSSP's warning).
+- **Rows** (D050, D162).  Every row holds at ``sol`` to GTOL = eps (1e3 + 8 kappa) of
+  |a_i| |sol| + |b_i|, kappa = tr(H + DIAG I) tr((H + DIAG I)^-1) (``_kappa``): the method is
+  not backward stable and its answers may miss rows by ~30 eps kappa, so no sol is returned
+  that misses one by more (``MISSES_MESSAGE``).  Rows are tested relative to that size
+  (``_row``), z = 0 unless ZN > 1e3 eps ZR (ZR the size of ZN's terms), a row that depends
+  on the active ones and holds to GTOL (a repeated row, 0 x = 0, an inequality repeating an
+  active equality) is held: not added, re-examined when sol moves, not in ``active``.
+- **Unbounded** (D163).  Where DIAG > 0, a direction from the regularized answer (of the
+  problem, then of its recession problem, b = 0) along which every row stays feasible and
+  the objective falls without bound, to sqrt(eps) of the problem's scale (``_unbounded``):
+  QPError 'unbounded'.
+- **Errors**.  QPError: inconsistent constraints, no solution within GTOL, unbounded, the
+  iteration limit, a non-finite answer (overflow); ValueError/TypeError for bad arguments
+  (shapes, sizes, non-finite h, g, a or b: ``linkrepro.checks``).
 
-Infeasible problems were returned as solved (D050, found by the fuzz): where a violated
-row's normal depends on the active ones, z = 0 up to rounding, but the test ZN > eps |n+|^2
-was absolute and rounding passed it, so the method stepped S/ZN ~ 1e14 along noise and added
-the row (more active rows than variables), leaving others violated.  Mended in the FORTRAN
-and here alike: z = 0 unless ZN > 1e3 eps ZR, ZR the size of ZN's terms; the row tests are
-relative to |a_i| |x| + |b_i| (``_row``; a bound at x ~ 1e-20 was ignored) and the drop test
-to r alone (u is in g's units: at x ~ 1e150 nothing could be dropped); an equality that holds
-and depends on the active rows (a repeated row, 0 x = 0) is held, not refused; after a full
-step, where rounding left an active row off by more than GTOL, sol is projected back
-(``_refine``); and no sol is returned that misses a row by more than GTOL = eps (1e3 +
-8 kappa) of its size, kappa = tr(H + DIAG I) tr((H + DIAG I)^-1) >= its condition number
-(``_kappa``), the method's own rounding: it is not backward stable, its answers miss rows by
-up to ~30 eps cond(H + DIAG I), 4.5e-9 on the corrected CSSP example's QP, whose bits are
-unchanged.  Otherwise QPError (``MISSES_MESSAGE``, status 4).
+Scale: DQPROG solves the problem in its own units (``_dqprog``): each row of a and b scaled
+by a power of two to a largest entry in [1, 2), H and g by a power of four to a largest
+|H_ij| in [1, 4), QPSOLV (``_solve``) run on that, DIAG and the multipliers scaled back: a
+copy scaled by such powers gives the same bits (D050).  Work arrays are sized by the
+constraints (numerically dependent normals can enter before QPGAUS finds M singular).
 
 Units are the caller's; in the CSSP balancing problem x holds the nine point masses
 (lb*s^2/in) and H is twice the objective's quadratic form summed over the cycle.
