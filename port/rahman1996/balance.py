@@ -45,11 +45,12 @@ TABLES = ("5_2", "5_3", "5_4", "5_5", "5_6", "5_7")
 
 
 def hessian_shift(h: np.ndarray) -> float:
-    """DIAG: the multiple of I that makes H positive definite, by our QPROG's rule (D050).
+    """DIAG: the multiple of I that our QPROG adds to H (D050, D160).
 
-    Cholesky pivot by pivot on H scaled to a largest entry in [1, 4); a pivot below
-    sqrt(eps)*max|H_ij| raises DIAG by the shortfall and restarts.  0 for a positive
-    definite H.  The rule is port/qprog.py's, operation for operation the FORTRAN's.
+    0 where H is positive definite to its rounding (every Cholesky pivot at least n eps
+    max|H_ij| and tr(H) tr(H^-1) within 1/(n eps)); else Cholesky pivot by pivot on H scaled
+    to a largest entry in [1, 4), a pivot below sqrt(eps)*max|H_ij| raising DIAG by the
+    shortfall.  The rule is port/qprog.py's, operation for operation the FORTRAN's.
     """
     return qprog.hessian_shift(h)
 

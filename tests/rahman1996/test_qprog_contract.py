@@ -313,3 +313,26 @@ def test_the_slowest_speed_computes_without_a_runtime_warning():
             slow = port_cssp.balance(port_cssp.CsspInputs(rpm=2.0 ** -126), quirks)
             np.testing.assert_allclose(slow["solution"], port_cssp.balance(port_cssp.CsspInputs(), quirks)["solution"],
                                        rtol=1e-6)
+
+
+# ------------------------------------------------------------------- the fuzz's QP check
+
+
+def test_the_fuzzs_qp_check_fails_on_what_it_must_find():
+    """harness/scenes/rahman1996/fuzz.py's check: silent on QPROG's answers; a finding for the
+    old answer to the unbounded min -x2 (sol (0, 6.7e7), DIAG 1.5e-8), for a point off the
+    optimum, for a negative inequality multiplier, for a row missed."""
+    from linkrepro.harness.scenes.rahman1996.fuzz import CHECKS
+    check = CHECKS["qp"]
+    h, g, a, b = np.eye(2), np.array([-1.0, -1.0]), np.array([[1.0, 1.0]]), np.array([3.0])
+    good = port_qprog.qprog(h, g, a, b)                                   # x = (1.5, 1.5), lambda = 0.5
+    assert check(((h, g), {"a": a, "b": b}), good) is None
+    off = dict(good, sol=good["sol"] + [1e-6, -1e-6])
+    assert "not optimal" in check(((h, g), {"a": a, "b": b}), off)
+    negative = dict(good, multipliers=-good["multipliers"], sol=np.array([0.5, 0.5]))
+    assert check(((h, g), {"a": a, "b": b}), negative) is not None
+    missed = dict(good, sol=np.array([1.4, 1.5]))
+    assert "violated" in check(((h, g), {"a": a, "b": b}), missed)
+    old = {"sol": np.array([0.0, 67108864.0]), "diag": 1.4901161193847656e-08, "active": np.zeros(0, int),
+           "multipliers": np.zeros(0), "regularized": True, "condition": 1.0}
+    assert "unbounded" in check(((np.diag([1.0, 0.0]), np.array([0.0, -1.0])), {}), old)
