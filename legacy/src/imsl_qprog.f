@@ -676,6 +676,20 @@ C     TIMES IT (ISSUE 22).  E AND Y ARE WORK ARRAYS OF LENGTH N.
       RETURN
       END
 C
+      SUBROUTINE QPLGN (N, NACT, GN, LDL, R, Y)                         ! D160
+C     Y = Y - GN R OVER THE FIRST NACT COLUMNS OF GN
+      INTEGER N, NACT, LDL, I, K                                        ! D160
+      DOUBLE PRECISION GN(LDL,*), R(*), Y(*), S                         ! D160
+      DO 20 I = 1, N                                                    ! D160
+         S = Y(I)                                                       ! D160
+         DO 10 K = 1, NACT                                              ! D160
+            S = S - GN(I,K)*R(K)                                        ! D160
+   10    CONTINUE                                                       ! D160
+         Y(I) = S                                                       ! D160
+   20 CONTINUE                                                          ! D160
+      RETURN                                                            ! D160
+      END                                                               ! D160
+C
       SUBROUTINE QPHV (N, H, LDH, X, Y)                                 ! D160
 C     Y = H X, H READ FROM ITS LOWER TRIANGLE (THE PART QPROG READS)
       INTEGER N, LDH, I, J                                              ! D160
@@ -706,7 +720,7 @@ C     MC, RHS, R, Y, E: WORK.  FREE OF H'S UNITS AND OF THE ROWS' SCALES.
       INTEGER NVAR, NACT, IACT(*), LDA, LDH, LDL, LDM, I, J, K, INFO    ! D160
       DOUBLE PRECISION SGN(*), A(LDA,*), H(LDH,*), L(LDL,*), GN(LDL,*), ! D160
      *                 M(LDM,*), MC(LDM,*), RHS(*), R(*), Y(*), E(*),   ! D160
-     *                 TH, TR, S                                        ! D160
+     *                 TH, TR                                           ! D160
       LOGICAL PROJ                                                      ! D160
       CALL QPNMAT (NVAR, NACT, IACT, SGN, A, LDA, L, LDL, GN, MC, LDM,  ! D160
      *             E)                                                   ! D160
@@ -730,15 +744,7 @@ C     MC, RHS, R, Y, E: WORK.  FREE OF H'S UNITS AND OF THE ROWS' SCALES.
             CALL QPGAUS (NACT, M, LDM, RHS, R, INFO)                    ! D160
             PROJ = INFO.EQ.0                                            ! D160
          END IF                                                         ! D160
-         IF (PROJ) THEN                                                 ! D160
-            DO 40 I = 1, NVAR                                           ! D160
-               S = Y(I)                                                 ! D160
-               DO 30 K = 1, NACT                                        ! D160
-                  S = S - GN(I,K)*R(K)                                  ! D160
-   30          CONTINUE                                                 ! D160
-               Y(I) = S                                                 ! D160
-   40       CONTINUE                                                    ! D160
-         END IF                                                         ! D160
+         IF (PROJ) CALL QPLGN (NVAR, NACT, GN, LDL, R, Y)               ! D160
          CALL QPHV (NVAR, H, LDH, Y, E)                                 ! D160
          DO 50 I = 1, NVAR                                              ! D160
             TR = TR + Y(I)*E(I)                                         ! D160
@@ -783,15 +789,7 @@ C     E: WORK.
     5    CONTINUE                                                       ! D163
          CALL QPGAUS (NACT, M, LDM, RHS, R, INFO)                       ! D163
          FREE = INFO.EQ.0                                               ! D163
-         IF (FREE) THEN                                                 ! D163
-            DO 8 J = 1, NVAR                                            ! D163
-               S = D(J)                                                 ! D163
-               DO 7 K = 1, NACT                                         ! D163
-                  S = S - GN(J,K)*R(K)                                  ! D163
-    7          CONTINUE                                                 ! D163
-               D(J) = S                                                 ! D163
-    8       CONTINUE                                                    ! D163
-         END IF                                                         ! D163
+         IF (FREE) CALL QPLGN (NVAR, NACT, GN, LDL, R, D)               ! D163
       END IF                                                            ! D163
       IF (FREE) THEN                                                    ! D163
          IF (QPRAY(NVAR, NCON, NEQ, A, LDA, G, H, LDH, D, E)) RETURN    ! D163

@@ -349,6 +349,16 @@ def _kappa(h, diag, low, e, y):
 
 
 @njit(cache=True)
+def _less_gn(gn, nact, r, y):
+    """QPLGN: y = y - GN r over the first nact columns of GN."""
+    for i in range(y.shape[0]):                           # DO 20
+        s = y[i]
+        for k in range(nact):                             # DO 10
+            s = s - gn[k, i] * r[k]
+        y[i] = s
+
+
+@njit(cache=True)
 def _hv(h, x, y):
     """QPHV: y = H x, H read from its lower triangle."""
     n = x.shape[0]
@@ -391,11 +401,7 @@ def _condition(h, low, a, sgn, iact, nact, gn, m, rhs, r, y, e):
                     m[i, k] = mc[i, k]
             project = _gaus(nact, m, rhs, r) == 0
         if project:
-            for i in range(nvar):                         # DO 40
-                s = y[i]
-                for k in range(nact):                     # DO 30
-                    s = s - gn[k, i] * r[k]
-                y[i] = s
+            _less_gn(gn, nact, r, y)
         _hv(h, y, e)
         for i in range(nvar):                             # DO 50
             tr = tr + y[i] * e[i]
@@ -424,11 +430,7 @@ def _unbounded(h, g, a, neq, low, sgn, iact, nact, sol, gn, m, rhs, r, d, e):
             rhs[k] = s
         free = _gaus(nact, m, rhs, r) == 0
         if free:
-            for j in range(nvar):                         # DO 8
-                s = d[j]
-                for k in range(nact):                     # DO 7
-                    s = s - gn[k, j] * r[k]
-                d[j] = s
+            _less_gn(gn, nact, r, d)
     if free and _ray(h, g, a, neq, d, e):
         return True
     _hv(h, sol, e)
