@@ -808,8 +808,8 @@ C     D163: DOES D CERTIFY THAT THE PROBLEM IS UNBOUNDED BELOW?  EVERY
 C     ROW STAYS FEASIBLE ALONG D (A(I,.)D = 0 FOR AN EQUALITY, >= 0 FOR AN
 C     INEQUALITY), AND THE OBJECTIVE FALLS WITHOUT BOUND ALONG IT: H D = 0
 C     AND G'D < 0, OR D'H D < 0.  EACH TO TAU = SQRT(EPS) OF THE
-C     PROBLEM'S SCALE ALONG D (A(I,.)D OF SUM |A(I,J)| MAX|D(J)|, G'D OF
-C     SUM |G(J)| MAX|D(J)|, H D OF MAX|H(I,J)| MAX|D(J)|, D'H D OF
+C     PROBLEM'S SCALE ALONG D, D TAKEN TO MAX|D(J)| = 1 FIRST (A(I,.)D OF
+C     SUM |A(I,J)|, G'D OF SUM |G(J)|, H D OF MAX|H(I,J)|, D'H D OF
 C     MAX|H(I,J)| D'D): THE DIAG RULE'S OWN LEVEL, WHICH TAKES A
 C     CURVATURE BELOW IT FOR NONE.  E: WORK.
       INTEGER NVAR, NCON, NEQ, LDA, LDH, I, J                           ! D163
@@ -819,25 +819,28 @@ C     CURVATURE BELOW IT FOR NONE.  E: WORK.
       QPRAY = .FALSE.                                                   ! D163
       TAU = SQRT(EPSILON(1.0D0))                                        ! D163
       DMAX = 0.0D0                                                      ! D163
+      DO 5 J = 1, NVAR                                                  ! D163
+         DMAX = MAX(DMAX, ABS(D(J)))                                    ! D163
+    5 CONTINUE                                                          ! D163
+      IF (DMAX.EQ.0.0D0) RETURN                                         ! D163
       DD = 0.0D0                                                        ! D163
       GD = 0.0D0                                                        ! D163
       GS = 0.0D0                                                        ! D163
       DO 10 J = 1, NVAR                                                 ! D163
-         DMAX = MAX(DMAX, ABS(D(J)))                                    ! D163
+         D(J) = D(J)/DMAX                                               ! D163
          DD = DD + D(J)*D(J)                                            ! D163
          GD = GD + G(J)*D(J)                                            ! D163
          GS = GS + ABS(G(J))                                            ! D163
    10 CONTINUE                                                          ! D163
-      IF (DMAX.EQ.0.0D0) RETURN                                         ! D163
       HMAX = QPHMAX(NVAR, H, LDH)                                       ! D163
       CALL QPHV (NVAR, H, LDH, D, E)                                    ! D163
       FLAT = .TRUE.                                                     ! D163
       CURV = 0.0D0                                                      ! D163
       DO 20 I = 1, NVAR                                                 ! D163
-         IF (ABS(E(I)).GT.TAU*HMAX*DMAX) FLAT = .FALSE.                 ! D163
+         IF (ABS(E(I)).GT.TAU*HMAX) FLAT = .FALSE.                      ! D163
          CURV = CURV + D(I)*E(I)                                        ! D163
    20 CONTINUE                                                          ! D163
-      IF (.NOT.((FLAT .AND. GD.LT.-TAU*GS*DMAX) .OR.                    ! D163
+      IF (.NOT.((FLAT .AND. GD.LT.-TAU*GS) .OR.                         ! D163
      *          CURV.LT.-TAU*HMAX*DD)) RETURN                           ! D163
       DO 40 I = 1, NCON                                                 ! D163
          S = 0.0D0                                                      ! D163
@@ -847,7 +850,7 @@ C     CURVATURE BELOW IT FOR NONE.  E: WORK.
             SIZE = SIZE + ABS(A(I,J))                                   ! D163
    30    CONTINUE                                                       ! D163
          IF (I.LE.NEQ) S = -ABS(S)                                      ! D163
-         IF (S.LT.-TAU*SIZE*DMAX) RETURN                                ! D163
+         IF (S.LT.-TAU*SIZE) RETURN                                     ! D163
    40 CONTINUE                                                          ! D163
       QPRAY = .TRUE.                                                    ! D163
       RETURN                                                            ! D163

@@ -445,31 +445,33 @@ def _ray(h, g, a, neq, d, e):
     """QPRAY (D163): does d certify that the problem is unbounded below?  Every row stays
     feasible along d (a_i d = 0 for an equality, >= 0 for an inequality) and the objective
     falls without bound along it, H d = 0 and g'd < 0, or d'H d < 0; each to tau = sqrt(eps)
-    of the problem's scale along d (a_i d of sum_j |a_ij| max|d_j|, g'd of sum_j |g_j|
-    max|d_j|, H d of max|H_ij| max|d_j|, d'H d of max|H_ij| d'd): the DIAG rule's own level,
+    of the problem's scale along d, d taken to max|d_j| = 1 first (a_i d of sum_j |a_ij|,
+    g'd of sum_j |g_j|, H d of max|H_ij|, d'H d of max|H_ij| d'd): the DIAG rule's own level,
     which takes a curvature below it for none.  ``e``: work."""
     nvar, ncon = d.shape[0], a.shape[0]
     tau = math.sqrt(EPS)
     dmax = 0.0
+    for j in range(nvar):                                 # DO 5
+        dmax = _max(dmax, abs(d[j]))
+    if dmax == 0.0:
+        return False
     dd = 0.0
     gd = 0.0
     gs = 0.0
     for j in range(nvar):                                 # DO 10
-        dmax = _max(dmax, abs(d[j]))
+        d[j] = d[j] / dmax
         dd = dd + d[j] * d[j]
         gd = gd + g[j] * d[j]
         gs = gs + abs(g[j])
-    if dmax == 0.0:
-        return False
     hmax = _hmax(h)
     _hv(h, d, e)
     flat = True
     curv = 0.0
     for i in range(nvar):                                 # DO 20
-        if abs(e[i]) > tau * hmax * dmax:
+        if abs(e[i]) > tau * hmax:
             flat = False
         curv = curv + d[i] * e[i]
-    if not ((flat and gd < -tau * gs * dmax) or curv < -tau * hmax * dd):
+    if not ((flat and gd < -tau * gs) or curv < -tau * hmax * dd):
         return False
     for i in range(ncon):                                 # DO 40
         s = 0.0
@@ -479,7 +481,7 @@ def _ray(h, g, a, neq, d, e):
             size = size + abs(a[i, j])
         if i < neq:
             s = -abs(s)
-        if s < -tau * size * dmax:
+        if s < -tau * size:
             return False
     return True
 
