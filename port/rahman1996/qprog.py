@@ -44,7 +44,9 @@ and numpy):
 - **Unbounded** (D163).  Where DIAG > 0, a direction from the regularized answer (of the
   problem, then of its recession problem, b = 0) along which every row stays feasible and
   the objective falls without bound, to sqrt(eps) of the problem's scale (``_unbounded``):
-  QPError 'unbounded'.
+  QPError 'unbounded'.  A convex (semidefinite) H's is found so; an indefinite H's only where
+  the regularized answer moves along a direction of negative curvature (else the answer is
+  the regularized problem's, with the DIAG warning).
 - **Errors**.  QPError: inconsistent constraints, no solution within GTOL, unbounded, the
   iteration limit, a non-finite answer (overflow); ValueError/TypeError for bad arguments
   (shapes, sizes, non-finite h, g, a or b: ``linkrepro.checks``).
