@@ -20,9 +20,8 @@ Units: inch, lbf, second, lb*s^2/in; crank angles in degrees at the interface.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import warnings
+from dataclasses import dataclass
 
 import numpy as np
 
