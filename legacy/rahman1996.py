@@ -5,12 +5,15 @@ D051) over its 37 crank positions, 0..360 deg in 10-deg steps, and returns every
 of Tables 5.1-5.7.  Defaults are the printed PARAMETERs (section 5.2).
 
 Units as printed: inch, lbf, second; masses lb*s^2/in; inertias lb*s^2*in; angles deg.
-Errors: ``ValueError`` for bad parameters, ``ConvergenceError`` when the printed
+Errors: ``ValueError`` for bad parameters (a crank speed below 2**-126 rpm included, D164),
+``ConvergenceError`` when the printed
 Newton-Raphson gives up after 150 iterations (the listing's STOP), ``SingularPositionError``
 when INVERSE meets an exactly zero pivot (its STOP) or, before any other failure, at the
 first position the program computed whose velocity equations have a condition number beyond
 ``linkrepro.checks.POSITION_CONDITION_LIMIT`` (the listing computes on there; register D150),
-``QPError`` when QPROG fails.
+``QPError`` when QPROG fails.  ``PrecisionWarning`` where QPROG's REAL*4 entry finds that
+single precision cannot carry the masses its Hessian determines (D161; QPROG's DIAG is by
+design there, D057, and not warned).
 
 Threads: the FORTRAN keeps static storage (-fno-automatic, COMMON /INVERR/, /QPSTAT/), and
 a status is read by a second call after the routine returns.  Every call sequence here holds
@@ -20,13 +23,15 @@ would alone (f2py holds the GIL during a call as well: the FORTRAN never runs tw
 from __future__ import annotations
 
 import threading
+import warnings
 
 import numpy as np
 
-from ..checks import (finite_matrix, listing_condition, masses, qp_arguments, refuse_singular_position,
-                      slider_crank)
+from ..checks import (cssp_speed, finite_matrix, listing_condition, masses, qp_arguments,
+                      refuse_singular_position, slider_crank)
 from ..errors import ConvergenceError, QPError, SingularPositionError
-from ..port.rahman1996.qprog import MISSES_MESSAGE
+from ..port.rahman1996 import balance as _balance
+from ..port.rahman1996.qprog import answer, precision_warning
 from . import _rahman1996 as _f
 
 #: held around every call into the compiled Rahman (1996) FORTRAN (static storage, see above)
@@ -57,11 +62,14 @@ def cssp(a1=2.0, a2=8.0, a4=1.0, alpha4_deg=250.0, s1=0.4, rpm=3000.0, solution=
     rad, s4 in in: the Newton's converged joint variables, D053).
     """
     p = slider_crank(a1, a2, a4, alpha4_deg, s1, rpm)
+    cssp_speed(p["rpm"])
     sol_in = np.zeros(9, dtype=np.float32) if solution is None else masses("solution", solution).astype(np.float32)
     qout = np.full((5, 37, 2), np.nan, order="F")      # NaN where the program computes no position
     with FORTRAN_LOCK:
+        _f.qpwarn_get(1)                                   # clear QPROG's REAL*4 count (D161)
         table, sol51, inert, hout, diag, istat, fail_deg, qout, sol = _f.cssp(
             p["a1"], p["a2"], p["a4"], p["alpha4_deg"], p["s1"], p["rpm"], int(solution is not None), sol_in, qout)
+        unsure, worst = _f.qpwarn_get(1)
     positions = qout.transpose(2, 1, 0)
     refuse_singular_position(np.tile(10.0 * np.arange(37), 2),
                              listing_condition(positions[..., 0], positions[..., 1], positions[..., 2]))
@@ -75,6 +83,8 @@ def cssp(a1=2.0, a2=8.0, a4=1.0, alpha4_deg=250.0, s1=0.4, rpm=3000.0, solution=
     if bad.any():
         raise SingularPositionError("CSSP: a non-finite value in the tables",
                                     float(10 * np.argmax(bad)))
+    if unsure:
+        warnings.warn(_balance.precision_warning(float(worst)), stacklevel=2)
     return {"table": table, "solution": sol.astype(np.float64), "solution_table51": sol51.astype(np.float64),
             "inertia": inert,
             "hessian": hout.astype(np.float64), "diag": float(diag),
@@ -98,13 +108,15 @@ def inverse(s) -> np.ndarray:
 
 
 def qprog(h, g, a=None, b=None, neq: int = 0) -> dict:
-    """Our QPROG (IMSL's calling convention, Goldfarb-Idnani; register D050).
+    """Our QPROG (IMSL's calling convention, Goldfarb-Idnani; registers D050, D160-D163).
 
     Minimizes g'x + x'Hx/2 subject to a[:neq] x = b[:neq] and a[neq:] x >= b[neq:].
-    Returns ``sol``, ``diag`` (the multiple of the identity added to H, 0 when H is
-    positive definite), ``active`` (0-based constraint indices) and ``multipliers``; QPError
-    for inconsistent constraints, the iteration limit, a non-finite answer, or one that would
-    miss a row by more than the method's rounding (port.rahman1996.qprog's docstring).
+    Returns ``sol``, ``diag`` (0 where H is positive definite to its rounding; else the
+    multiple of I added to H, and ``regularized`` True: the answer is the regularized
+    problem's, with a ``PrecisionWarning``), ``active`` (0-based constraint indices),
+    ``multipliers`` and ``condition``; QPError for inconsistent constraints, an unbounded
+    problem, the iteration limit, a non-finite answer, or one that would miss a row by more
+    than the method's rounding.  The contract in full: port.rahman1996.qprog's ``qprog``.
     """
     h, g, a, b, neq = qp_arguments(h, g, a, b, neq, 60, 200)
     n = g.size
@@ -113,14 +125,11 @@ def qprog(h, g, a=None, b=None, neq: int = 0) -> dict:
     with FORTRAN_LOCK:
         diag, sol, nact, iact, lam = _f.dqprog(b.size, neq, a_f, b_f, g, np.asfortranarray(h))
         status = int(_f.qpstat_get())
-    if status == 1:
-        raise QPError("QPROG: the constraints are inconsistent")
-    if status == 2:
-        raise QPError("QPROG: iteration limit reached")
-    if status == 4:
-        raise QPError(MISSES_MESSAGE)
+        condition = float(_f.qpcond_get())
     if status == 3:
         raise ValueError("QPROG: bad arguments")
-    if not (np.isfinite(diag) and np.all(np.isfinite(sol)) and np.all(np.isfinite(lam[:nact]))):
-        raise QPError("QPROG: the solution or DIAG (the shift of H) is not finite (the arithmetic overflowed)")
-    return {"sol": sol, "diag": float(diag), "active": iact[:nact] - 1, "multipliers": lam[:nact]}
+    result = answer(status, diag, sol, iact[:nact] - 1, lam[:nact], condition)
+    warning = precision_warning(h, result)
+    if warning is not None:
+        warnings.warn(warning, stacklevel=2)
+    return result

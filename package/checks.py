@@ -222,6 +222,22 @@ def slider_crank(a1, a2, a4, alpha4_deg, s1, rpm) -> dict:
                       positive=("a1", "a2", "rpm"))
 
 
+#: the slowest crank the CSSP engines take (rpm): 2**-126, the smallest normal REAL*4.  The
+#: listing holds the speed in REAL*4 (slower, it is subnormal, with fewer digits, or 0: at
+#: 1e-50 rpm the QP's Hessian was 0/0), and the objective's constants C1..C3 of eq. (4.2)
+#: carry its fourth power (in double they underflow near 1e-78 rpm); register D164
+CSSP_RPM_MIN = 2.0 ** -126
+
+
+def cssp_speed(rpm: float) -> float:
+    """The CSSP's crank speed (rpm; a positive float, ``slider_crank``): ValueError below
+    ``CSSP_RPM_MIN``, naming the speed and the limit."""
+    if rpm < CSSP_RPM_MIN:
+        raise ValueError(f"rpm={rpm!r} is below the CSSP's slowest speed, 2**-126 = {CSSP_RPM_MIN:.6g} rpm (the "
+                         "smallest normal number of the listing's REAL*4 speed; register D164)")
+    return rpm
+
+
 #: the largest condition number of the slider crank's velocity equations the CSSP engines
 #: accept: 1/sqrt(u) for the unit roundoff u = 2**-24 of the listing's REAL*4 inputs.  Beyond
 #: it one rounding of an input moves the tables by tens of per cent (register D150)

@@ -7,14 +7,20 @@ C        CALL QPROG (NVAR, NCON, NEQ, A, LDA, B, G, H, LDH, DIAG, SOL,
 C                    NACT, IACT, ALAMDA)
 C
 C     MINIMIZES  G'X + X'HX/2  SUBJECT TO  A(I,.)X = B(I), I=1..NEQ,
-C     AND  A(I,.)X >= B(I), I=NEQ+1..NCON.  IF H IS NOT POSITIVE
-C     DEFINITE, H + DIAG*I IS USED, DIAG THE SMALLEST MULTIPLE FOUND BY
-C     RAISING IT PIVOT BY PIVOT IN THE CHOLESKY FACTORIZATION (D050).
-C     OUTPUT: SOL, NACT ACTIVE CONSTRAINTS IACT(1..NACT) WITH LAGRANGE
-C     MULTIPLIERS ALAMDA(1..NACT).  A STATUS IS LEFT IN COMMON /QPSTAT/:
-C     0 SOLVED, 1 CONSTRAINTS INCONSISTENT, 2 ITERATION LIMIT, 3 BAD
-C     ARGUMENTS, 4 THE SOLUTION FOUND MISSES A CONSTRAINT BY MORE THAN
-C     THE METHOD'S ROUNDING (QPSOLV'S LAST GUARD, ISSUE 22).  A SOLVED
+C     AND  A(I,.)X >= B(I), I=NEQ+1..NCON.  H IS SOLVED AS GIVEN WHERE
+C     ITS CHOLESKY FACTORIZATION HAS EVERY PIVOT AT LEAST NVAR*EPS*
+C     MAX|H(I,J)| (POSITIVE DEFINITE TO ITS ROUNDING, DIAG = 0; D160).
+C     ELSE H + DIAG*I IS USED, DIAG FOUND BY RAISING IT PIVOT BY PIVOT IN
+C     THE CHOLESKY FACTORIZATION (D050): THE ANSWER IS THEN THE
+C     REGULARIZED PROBLEM'S.  OUTPUT: SOL, NACT ACTIVE CONSTRAINTS
+C     IACT(1..NACT) WITH LAGRANGE MULTIPLIERS ALAMDA(1..NACT).  A STATUS
+C     IS LEFT IN COMMON /QPSTAT/: 0 SOLVED, 1 CONSTRAINTS INCONSISTENT,
+C     2 ITERATION LIMIT, 3 BAD ARGUMENTS, 4 THE SOLUTION FOUND MISSES A
+C     CONSTRAINT BY MORE THAN THE METHOD'S ROUNDING (QPSOLV'S LAST GUARD,
+C     ISSUE 22), 5 UNBOUNDED BELOW (D163); AND IN COMMON /QPCND/ QCOND,
+C     THE CONDITION OF THE ANSWER ON THE DIRECTIONS H DETERMINES (D160,
+C     QPCOND).  THE REAL*4 ENTRY QPROG COUNTS IN COMMON /QPWARN/ THE
+C     CALLS WHOSE ANSWER SINGLE PRECISION CANNOT CARRY (D161).  A SOLVED
 C     SOL MEETS EVERY ROW TO EPS*(1E3 + 8 KAPPA) OF |A(I,.)||SOL|+|B(I)|,
 C     KAPPA = TRACE(H+DIAG*I)*TRACE((H+DIAG*I)^-1) >= ITS CONDITION
 C     NUMBER.  ALL ARITHMETIC IS DOUBLE PRECISION (DQPROG); QPROG
@@ -30,8 +36,11 @@ C
       PARAMETER (MAXV=60, MAXC=200)
       DOUBLE PRECISION DA(MAXC,MAXV), DB(MAXC), DG(MAXV), DH(MAXV,MAXV),
      *                 DDIAG, DSOL(MAXV), DLAM(MAXC)
-      INTEGER I, J, ISTAT
+      DOUBLE PRECISION QCOND, WERR, TRH, ERR, US                        ! D161
+      INTEGER I, J, ISTAT, NWARN                                        ! D161
       COMMON /QPSTAT/ ISTAT
+      COMMON /QPCND/ QCOND                                              ! D161
+      COMMON /QPWARN/ WERR, NWARN                                       ! D161
       IF (NVAR.LT.1 .OR. NVAR.GT.MAXV .OR. NCON.LT.0 .OR.
      *    NCON.GT.MAXC .OR. NEQ.LT.0 .OR. NEQ.GT.NCON) THEN
          ISTAT = 3
@@ -51,6 +60,23 @@ C
    30 CONTINUE
       CALL DQPROG (NVAR, NCON, NEQ, DA, MAXC, DB, DG, DH, MAXV, DDIAG,
      *             DSOL, NACT, IACT, DLAM)
+C     D161: THE ANSWER'S RELATIVE ERROR ON THE DIRECTIONS H DETERMINES,
+C     QCOND*(US + DIAG/TRACE(H)): H'S OWN REAL*4 ROUNDING (US = 2**-24)
+C     AND THE REGULARIZATION.  AT 1 OR MORE SINGLE PRECISION CARRIES NO
+C     DIGIT OF IT: THE CALL IS COUNTED, THE WORST ERROR KEPT (QPWARN_GET)
+      IF (ISTAT.EQ.0) THEN                                              ! D161
+         US = 0.5D0*EPSILON(1.0E0)                                      ! D161
+         TRH = 0.0D0                                                    ! D161
+         DO 35 J = 1, NVAR                                              ! D161
+            TRH = TRH + DH(J,J)                                         ! D161
+   35    CONTINUE                                                       ! D161
+         ERR = QCOND*US                                                 ! D161
+         IF (TRH.GT.0.0D0) ERR = QCOND*(US + DDIAG/TRH)                 ! D161
+         IF (ERR.GE.1.0D0) THEN                                         ! D161
+            NWARN = NWARN + 1                                           ! D161
+            WERR = MAX(WERR, ERR)                                       ! D161
+         END IF                                                         ! D161
+      END IF                                                            ! D161
       DIAG = DDIAG
       DO 40 J = 1, NVAR
          SOL(J) = DSOL(J)
@@ -79,7 +105,10 @@ C     AND ALAMDA ARE SCALED BACK; SOL IS THE SAME FOR BOTH PROBLEMS.
       DOUBLE PRECISION AS(MAXC,MAXV), BS(MAXC), GS(MAXV), HS(MAXV,MAXV),
      *                 BIG, QPHMAX
       INTEGER I, J, K, KH, IRS(MAXC), ISTAT
+      DOUBLE PRECISION QCOND, QC, DZ, SOLZ(MAXV), ALAMZ(MAXC)           ! D163
+      INTEGER NACTZ, IACTZ(MAXC)                                        ! D163
       COMMON /QPSTAT/ ISTAT
+      COMMON /QPCND/ QCOND                                              ! D163
       NACT = 0
       IF (NVAR.LT.1 .OR. NVAR.GT.MAXV .OR. NCON.LT.0 .OR.
      *    NCON.GT.MAXC .OR. NEQ.LT.0 .OR. NEQ.GT.NCON .OR.
@@ -114,7 +143,20 @@ C     AND ALAMDA ARE SCALED BACK; SOL IS THE SAME FOR BOTH PROBLEMS.
    40    CONTINUE
    45 CONTINUE
       CALL QPSOLV (NVAR, NCON, NEQ, AS, MAXC, BS, GS, HS, MAXV, DIAG,
-     *             SOL, NACT, IACT, ALAMDA)
+     *             SOL, NACT, IACT, ALAMDA, .FALSE.)                    ! D163
+C     D163: WHERE H WAS SHIFTED, THE RECESSION PROBLEM (B = 0: ITS ROWS
+C     ARE THE DIRECTIONS ALONG WHICH EVERY ROW STAYS FEASIBLE) DECIDES
+C     WHETHER THE PROBLEM IS UNBOUNDED BELOW (QPSOLV, QPUNBD): STATUS 5
+      IF (ISTAT.EQ.0 .AND. DIAG.GT.0.0D0) THEN                          ! D163
+         QC = QCOND                                                     ! D163
+         DO 47 I = 1, NCON                                              ! D163
+            BS(I) = 0.0D0                                               ! D163
+   47    CONTINUE                                                       ! D163
+         CALL QPSOLV (NVAR, NCON, NEQ, AS, MAXC, BS, GS, HS, MAXV, DZ,  ! D163
+     *                SOLZ, NACTZ, IACTZ, ALAMZ, .TRUE.)                ! D163
+         IF (ISTAT.NE.5) ISTAT = 0                                      ! D163
+         QCOND = QC                                                     ! D163
+      END IF                                                            ! D163
       DIAG = SCALE(DIAG, 2*KH)
       DO 50 K = 1, NACT
          ALAMDA(K) = SCALE(ALAMDA(K), 2*KH + IRS(IACT(K)))
@@ -123,7 +165,7 @@ C     AND ALAMDA ARE SCALED BACK; SOL IS THE SAME FOR BOTH PROBLEMS.
       END
 C
       SUBROUTINE QPSOLV (NVAR, NCON, NEQ, A, LDA, B, G, H, LDH, DIAG,
-     *                   SOL, NACT, IACT, ALAMDA)
+     *                   SOL, NACT, IACT, ALAMDA, RECESS)               ! D163
 C     THE GOLDFARB-IDNANI METHOD ON THE SCALED PROBLEM (SEE DQPROG).
 C     ISSUE 22 (A VIOLATED ROW DEPENDENT ON THE ACTIVE ONES WAS ADDED AS
 C     IF INDEPENDENT, AND INFEASIBLE PROBLEMS RETURNED AS SOLVED): Z = 0
@@ -132,6 +174,11 @@ C     RELATIVE TO |A(I,.)||SOL| + |B(I)| (QPROW), A DEPENDENT EQUALITY
 C     THAT HOLDS IS HELD INSTEAD OF REFUSED, A FULL STEP PROJECTS SOL
 C     BACK ONTO THE ACTIVE ROWS WHERE ROUNDING LEFT THEM OFF (QPRFN),
 C     AND NO SOL IS RETURNED THAT MISSES A ROW BY MORE THAN GTOL.
+C     A DEFINITE H IS SOLVED AS GIVEN (D160), A ROW THAT
+C     DEPENDS ON THE ACTIVE ONES AND HOLDS TO GTOL IS HELD (D162), AND
+C     QCOND IS LEFT (D160).  WHERE DIAG > 0, STATUS 5 WHERE QPUNBD
+C     CERTIFIES FROM SOL THAT THE PROBLEM IS UNBOUNDED (D163); RECESS:
+C     THIS IS THE RECESSION PROBLEM (B = 0), SOLVED FOR THAT ALONE.
       INTEGER NVAR, NCON, NEQ, LDA, LDH, NACT, IACT(*)
       DOUBLE PRECISION A(LDA,*), B(*), G(*), H(LDH,*), DIAG, SOL(*),
      *                 ALAMDA(*)
@@ -144,16 +191,22 @@ C     NUMERICALLY DEPENDENT ONES CAN ENTER BEFORE QPGAUS FINDS M SINGULAR.
       DOUBLE PRECISION L(MAXV,MAXV), W(MAXV), Z(MAXV), R(MAXC), U(MAXC),
      *                 GN(MAXV,MAXC), M(MAXC,MAXC), RHS(MAXC),
      *                 SGN(MAXC), ENORM(MAXC)
+      DOUBLE PRECISION MC(MAXC,MAXC), CG(MAXC), STOL                    ! D160
       DOUBLE PRECISION S, SMIN, T, T1, T2, UPLUS, ZN, PIVOT, SCALE, EPS,
      *                 TOL, TINY, DNEW, QPHMAX, ZR, SIZE, GTOL, QPKAPP
+      DOUBLE PRECISION QCOND, QPCOND                                    ! D160
       INTEGER I, J, K, P, KDROP, ITER, MAXIT, ISTAT
-C     HELD(I): EQUALITY I HOLDS AND DEPENDS ON THE ACTIVE ROWS; NOT
-C     ADDED, AND NOT PICKED AGAIN UNTIL SOL MOVES
+C     HELD(I): ROW I HOLDS AND DEPENDS ON THE ACTIVE ROWS; NOT ADDED,
+C     AND NOT PICKED AGAIN UNTIL SOL MOVES
       LOGICAL ACTIVE(MAXC), HELD(MAXC), DONE
+      LOGICAL DEFNT, QPUNBD, QPINDP                                     ! D160
+      LOGICAL RECESS                                                    ! D163
       COMMON /QPSTAT/ ISTAT
+      COMMON /QPCND/ QCOND                                              ! D160
       EPS = EPSILON(1.0D0)
       ISTAT = 0
       NACT = 0
+      QCOND = 0.0D0                                                     ! D160
       IF (NVAR.LT.1 .OR. NVAR.GT.MAXV .OR. NCON.LT.0 .OR.
      *    NCON.GT.MAXC .OR. NEQ.LT.0 .OR. NEQ.GT.NCON .OR.
      *    NCON.GT.LDA .OR. NVAR.GT.LDH) THEN
@@ -163,9 +216,15 @@ C     ADDED, AND NOT PICKED AGAIN UNTIL SOL MOVES
 C     ---- CHOLESKY OF H + DIAG*I, RAISING DIAG WHERE A PIVOT FAILS ----
 C     TINY IS RELATIVE TO THE LARGEST |H(I,J)| READ (THE LOWER TRIANGLE;
 C     ISSUE 22: MAX |H(I,I)| LEFT A HUGE INDEFINITE H AN INFINITE DIAG)
+C     D160: FIRST WITH DIAG = 0 AND TINY = NVAR*EPS*SCALE, THE ROUNDING
+C     OF A PIVOT: WHERE EVERY PIVOT PASSES (AND KAPPA, AFTER 130, STAYS
+C     WITHIN 1/(NVAR EPS)), H IS POSITIVE DEFINITE TO ITS ROUNDING AND
+C     SOLVED AS GIVEN (A CONDITION OF 1E14 INCLUDED); ELSE THE DIAG RULE
+C     RUNS AS BEFORE, FROM DIAG = 0 WITH SQRT(EPS)*SCALE
       SCALE = QPHMAX(NVAR, H, LDH)
       IF (SCALE.EQ.0.0D0) SCALE = 1.0D0
-      TINY = SQRT(EPS)*SCALE
+      DEFNT = .TRUE.                                                    ! D160
+      TINY = DBLE(NVAR)*EPS*SCALE                                       ! D160
       DIAG = 0.0D0
   100 CONTINUE
       DO 130 J = 1, NVAR
@@ -173,6 +232,11 @@ C     ISSUE 22: MAX |H(I,I)| LEFT A HUGE INDEFINITE H AN INFINITE DIAG)
          DO 110 K = 1, J-1
             PIVOT = PIVOT - L(J,K)**2
   110    CONTINUE
+         IF (PIVOT.LT.TINY .AND. DEFNT) THEN                            ! D160
+            DEFNT = .FALSE.                                             ! D160
+            TINY = SQRT(EPS)*SCALE                                      ! D160
+            GO TO 100                                                   ! D160
+         END IF                                                         ! D160
          IF (PIVOT.LT.TINY) THEN
 C           A SHORTFALL BELOW DIAG'S LAST BIT TAKES THE NEXT NUMBER UP
 C           (ELSE STATEMENT 100 WOULD REPEAT THE SAME FACTORIZATION)
@@ -190,11 +254,25 @@ C           (ELSE STATEMENT 100 WOULD REPEAT THE SAME FACTORIZATION)
             L(I,J) = S/L(J,J)
   125    CONTINUE
   130 CONTINUE
+C     D160: AND KAPPA = TR(H) TR(H^-1) >= COND(H) WITHIN 1/(NVAR EPS): NO
+C     PERTURBATION OF H OF THE SIZE OF ITS ROUNDING MAKES IT SINGULAR
+      IF (DEFNT) THEN                                                   ! D160
+         IF (DBLE(NVAR)*EPS*QPKAPP(NVAR, H, LDH, DIAG, L, MAXV, W, Z)   ! D160
+     *       .GT.1.0D0) THEN                                            ! D160
+            DEFNT = .FALSE.                                             ! D160
+            TINY = SQRT(EPS)*SCALE                                      ! D160
+            GO TO 100                                                   ! D160
+         END IF                                                         ! D160
+      END IF                                                            ! D160
 C     GTOL: HOW FAR A SOLVED SOL MAY MISS A ROW, RELATIVE TO ITS SIZE:
 C     1E3 EPS, AND 8 EPS KAPPA FOR THE ROUNDING OF THE METHOD WHERE
 C     H + DIAG*I IS ILL-CONDITIONED (ISSUE 22)
       GTOL = EPS*(1.0D3 + 8.0D0*QPKAPP(NVAR, H, LDH, DIAG, L, MAXV, W,
      *                                 Z))
+C     STOL: HOW FAR THE STATIONARITY MAY MISS BEFORE QPRFN REFINES IT:
+C     1E3 EPS WHERE H IS SOLVED AS GIVEN, GTOL WHERE DIAG > 0 (D160)
+      STOL = GTOL                                                       ! D160
+      IF (DIAG.EQ.0.0D0) STOL = 1.0D3*EPS                               ! D160
 C     ---- UNCONSTRAINED MINIMUM: SOL = -(H+DIAG I)^-1 G ----
       DO 140 I = 1, NVAR
          RHS(I) = -G(I)
@@ -303,11 +381,21 @@ C        R IS FREE OF UNITS (ISSUE 22: WAS EPS*MAX(1,|U(K)|), U IN G'S)
 C     Z = 0 (N+ DEPENDS ON THE ACTIVE NORMALS) UNLESS ZN STANDS ABOVE ITS
 C     ROUNDING (ISSUE 22: THE TEST WAS ZN > EPS |N+|**2, WHICH ROUNDING
 C     PASSED, AND A FULL STEP OF S/ZN ~ 1E14 ALONG NOISE ADDED P)
+C     D160: WHERE H IS ILL-CONDITIONED ZN FALLS BELOW 1E3 EPS ZR FOR AN
+C     INDEPENDENT ROW TOO: THEN A POSITIVE ZN IS TAKEN IF N+ IS
+C     INDEPENDENT OF THE ACTIVE NORMALS (QPINDP)
       T2 = -1.0D0
-      IF (ZN.GT.1.0D3*EPS*ZR) T2 = -S/ZN
-      IF (T2.LT.0.0D0 .AND. P.LE.NEQ .AND. UPLUS.EQ.0.0D0 .AND.
-     *    -S.LE.1.0D3*EPS*SIZE) THEN
-C        A DEPENDENT EQUALITY THAT HOLDS (A REPEATED ROW, 0 X = 0)
+      IF (ZN.GT.1.0D3*EPS*ZR) THEN                                      ! D160
+         T2 = -S/ZN                                                     ! D160
+      ELSE IF (ZN.GT.0.0D0 .AND. NACT.GT.0) THEN                        ! D160
+         IF (QPINDP(NVAR, A, LDA, IACT, NACT, P, M, MAXC, RHS, CG))     ! D160
+     *      T2 = -S/ZN                                                  ! D160
+      END IF                                                            ! D160
+C     A DEPENDENT ROW THAT HOLDS (A REPEATED ROW, 0 X = 0, AN INEQUALITY
+C     REPEATING AN ACTIVE EQUALITY) TO THE METHOD'S OWN ROUNDING GTOL
+C     (D162: WAS 1E3 EPS |ROW|, EQUALITIES ONLY: 'INCONSISTENT')
+      IF (T2.LT.0.0D0 .AND. UPLUS.EQ.0.0D0 .AND.                        ! D162
+     *    -S.LE.GTOL*SIZE) THEN                                         ! D162
          HELD(P) = .TRUE.
          GO TO 200
       END IF
@@ -344,7 +432,32 @@ C        FULL STEP: P JOINS THE ACTIVE SET
          U(NACT) = UPLUS
          ACTIVE(P) = .TRUE.
          CALL QPRFN (NVAR, NACT, IACT, SGN, A, LDA, B, L, MAXV, GTOL,
-     *               SOL, U, GN, M, MAXC, RHS, R, W)
+     *               SOL, U, GN, M, MAXC, RHS, R, W, H, LDH, G, DIAG,   ! D160
+     *               STOL, Z)                                           ! D160
+C        D160: AN INEQUALITY'S MULTIPLIER THE REFINEMENT LEFT NEGATIVE:
+C        DROP THAT ROW (THE METHOD KEEPS U >= 0), REFINE ON THE REST
+  386    IF (DIAG.EQ.0.0D0) THEN                                        ! D160
+            KDROP = 0                                                   ! D160
+            T = 0.0D0                                                   ! D160
+            DO 387 K = 1, NACT                                          ! D160
+               IF (IACT(K).GT.NEQ .AND. U(K).LT.T) THEN                 ! D160
+                  T = U(K)                                              ! D160
+                  KDROP = K                                             ! D160
+               END IF                                                   ! D160
+  387       CONTINUE                                                    ! D160
+            IF (KDROP.GT.0) THEN                                        ! D160
+               ACTIVE(IACT(KDROP)) = .FALSE.                            ! D160
+               DO 388 K = KDROP, NACT-1                                 ! D160
+                  IACT(K) = IACT(K+1)                                   ! D160
+                  U(K) = U(K+1)                                         ! D160
+  388          CONTINUE                                                 ! D160
+               NACT = NACT - 1                                          ! D160
+               CALL QPRFN (NVAR, NACT, IACT, SGN, A, LDA, B, L, MAXV,   ! D160
+     *                     GTOL, SOL, U, GN, M, MAXC, RHS, R, W, H, LDH,! D160
+     *                     G, DIAG, STOL, Z)                            ! D160
+               GO TO 386                                                ! D160
+            END IF                                                      ! D160
+         END IF                                                         ! D160
          GO TO 200
       END IF
 C     PARTIAL STEP: DROP THE ACTIVE CONSTRAINT KDROP, STAY WITH P
@@ -366,6 +479,16 @@ C     THE ORIGINAL CONSTRAINTS' SENSE ----
             RETURN
          END IF
   905 CONTINUE
+      IF (DIAG.GT.0.0D0) THEN                                           ! D163
+         IF (QPUNBD(NVAR, NCON, NEQ, A, LDA, G, H, LDH, L, MAXV, SGN,   ! D163
+     *              IACT, NACT, SOL, GN, M, MAXC, RHS, R, W, Z)) THEN   ! D163
+            ISTAT = 5                                                   ! D163
+            RETURN                                                      ! D163
+         END IF                                                         ! D163
+      END IF                                                            ! D163
+      IF (RECESS) RETURN                                                ! D163
+      QCOND = QPCOND(NVAR, NACT, IACT, SGN, A, LDA, H, LDH, L, MAXV,    ! D160
+     *               GN, M, MC, MAXC, RHS, R, W, Z)                     ! D160
       DO 910 K = 1, NACT
          ALAMDA(K) = SGN(IACT(K))*U(K)
   910 CONTINUE
@@ -413,17 +536,24 @@ C     (H = L L') AND M = N'H^-1N.  E IS A WORK ARRAY OF LENGTH NVAR.
       END
 C
       SUBROUTINE QPRFN (NVAR, NACT, IACT, SGN, A, LDA, B, L, LDL, GTOL,
-     *                  SOL, U, GN, M, LDM, RHS, R, W)
+     *                  SOL, U, GN, M, LDM, RHS, R, W, H, LDH, G, DIAG, ! D160
+     *                  STOL, E)                                        ! D160
 C     WHERE AN ACTIVE ROW MISSES ITS BOUND BY MORE THAN GTOL OF ITS SIZE
 C     (ROUNDING IN THE STEPS, E.G. FROM AN UNCONSTRAINED MINIMUM FAR OUT),
-C     AT MOST TWO SWEEPS OF  SOL = SOL + GN Y,  U = U + Y  WITH
-C     (N'H^-1N) Y = -(N'SOL - B): BACK ON THE ACTIVE ROWS, AND H SOL + G
-C     = N U STILL HOLDS (ISSUE 22).  GN, M, RHS, R AND W: QPSOLV'S WORK.
+C     OR (D160) A COMPONENT OF THE STATIONARITY RESIDUAL E = (H+DIAG I)
+C     SOL + G - N U BY MORE THAN STOL OF THE SIZE OF ITS TERMS, AT MOST
+C     TWO SWEEPS OF REFINEMENT OF THE KKT SYSTEM ON THE ACTIVE SET:
+C     SOL = SOL + GN Y - (H+DIAG I)^-1 E,  U = U + Y,  (N'H^-1N) Y =
+C     N'(H+DIAG I)^-1 E - (N'SOL - B).  WITHOUT A STATIONARITY MISS E IS
+C     NOT USED (SOL = SOL + GN Y, AS ISSUE 22 HAD IT).  GN, M, RHS, R, W
+C     AND E: QPSOLV'S WORK.
       INTEGER NVAR, NACT, IACT(*), LDA, LDL, LDM, J, K, SWEEP, INFO
+      INTEGER LDH, I                                                    ! D160
       DOUBLE PRECISION SGN(*), A(LDA,*), B(*), L(LDL,*), GTOL, SOL(*),
      *                 U(*), GN(LDL,*), M(LDM,*), RHS(*), R(*), W(*),
      *                 S, SIZE
-      LOGICAL OFF
+      DOUBLE PRECISION H(LDH,*), G(*), DIAG, STOL, E(*), T, HJI         ! D160
+      LOGICAL OFF, STAT                                                 ! D160
       DO 40 SWEEP = 1, 2
          OFF = .FALSE.
          DO 10 K = 1, NACT
@@ -431,13 +561,42 @@ C     = N U STILL HOLDS (ISSUE 22).  GN, M, RHS, R AND W: QPSOLV'S WORK.
             RHS(K) = -(SGN(IACT(K))*S)
             IF (ABS(S).GT.GTOL*SIZE) OFF = .TRUE.
    10    CONTINUE
-         IF (.NOT.OFF) RETURN
+         STAT = .TRUE.                                                  ! D160
+         DO 14 J = 1, NVAR                                              ! D160
+            S = G(J) + DIAG*SOL(J)                                      ! D160
+            SIZE = ABS(G(J)) + ABS(DIAG*SOL(J))                         ! D160
+            DO 12 I = 1, NVAR                                           ! D160
+               IF (J.GE.I) HJI = H(J,I)                                 ! D160
+               IF (J.LT.I) HJI = H(I,J)                                 ! D160
+               S = S + HJI*SOL(I)                                       ! D160
+               SIZE = SIZE + ABS(HJI*SOL(I))                            ! D160
+   12       CONTINUE                                                    ! D160
+            DO 13 K = 1, NACT                                           ! D160
+               T = SGN(IACT(K))*A(IACT(K),J)*U(K)                       ! D160
+               S = S - T                                                ! D160
+               SIZE = SIZE + ABS(T)                                     ! D160
+   13       CONTINUE                                                    ! D160
+            E(J) = S                                                    ! D160
+            IF (ABS(S).GT.STOL*SIZE) STAT = .FALSE.                     ! D160
+   14    CONTINUE                                                       ! D160
+         IF (.NOT.OFF .AND. STAT) RETURN                                ! D160
          CALL QPNMAT (NVAR, NACT, IACT, SGN, A, LDA, L, LDL, GN, M, LDM,
      *                W)
+         IF (.NOT.STAT) THEN                                            ! D160
+            CALL QPCHSL (NVAR, L, LDL, E, W)                            ! D160
+            DO 18 K = 1, NACT                                           ! D160
+               S = RHS(K)                                               ! D160
+               DO 17 J = 1, NVAR                                        ! D160
+                  S = S + SGN(IACT(K))*A(IACT(K),J)*W(J)                ! D160
+   17          CONTINUE                                                 ! D160
+               RHS(K) = S                                               ! D160
+   18       CONTINUE                                                    ! D160
+         END IF                                                         ! D160
          CALL QPGAUS (NACT, M, LDM, RHS, R, INFO)
          IF (INFO.NE.0) RETURN
          DO 30 J = 1, NVAR
             S = SOL(J)
+            IF (.NOT.STAT) S = S - W(J)                                 ! D160
             DO 20 K = 1, NACT
                S = S + GN(J,K)*R(K)
    20       CONTINUE
@@ -449,6 +608,52 @@ C     = N U STILL HOLDS (ISSUE 22).  GN, M, RHS, R AND W: QPSOLV'S WORK.
    40 CONTINUE
       RETURN
       END
+C
+      LOGICAL FUNCTION QPINDP (NVAR, A, LDA, IACT, NACT, P, GRAM, LDG,  ! D160
+     *                         RHS, C)                                  ! D160
+C     D160: IS ROW P'S NORMAL INDEPENDENT OF THE ACTIVE NORMALS, IN THE
+C     PLAIN (EUCLIDEAN) SENSE?  THE LEAST-SQUARES RESIDUAL RHO = N+ - N C,
+C     (N'N) C = N'N+, STANDS IN SOME COMPONENT ABOVE 1E3 EPS OF THE
+C     LARGEST SIZE OF ITS TERMS; NOT WHERE N'N IS SINGULAR.  WHERE H IS
+C     ILL-CONDITIONED ZN FALLS BELOW 1E3 EPS ZR FOR INDEPENDENT ROWS TOO
+C     (ZR GROWS WITH COND(H)), WHILE A DEPENDENT NORMAL (A REPEATED OR
+C     SUMMED ROW, MORE ROWS THAN VARIABLES) LEAVES RHO AT ITS ROUNDING.
+      INTEGER NVAR, LDA, IACT(*), NACT, P, LDG, I, J, K, INFO           ! D160
+      DOUBLE PRECISION A(LDA,*), GRAM(LDG,*), RHS(*), C(*), S, T, SIZE, ! D160
+     *                 BIG, SCL                                         ! D160
+      DO 20 I = 1, NACT                                                 ! D160
+         DO 10 K = 1, NACT                                              ! D160
+            S = 0.0D0                                                   ! D160
+            DO 5 J = 1, NVAR                                            ! D160
+               S = S + A(IACT(I),J)*A(IACT(K),J)                        ! D160
+    5       CONTINUE                                                    ! D160
+            GRAM(I,K) = S                                               ! D160
+   10    CONTINUE                                                       ! D160
+         S = 0.0D0                                                      ! D160
+         DO 15 J = 1, NVAR                                              ! D160
+            S = S + A(IACT(I),J)*A(P,J)                                 ! D160
+   15    CONTINUE                                                       ! D160
+         RHS(I) = S                                                     ! D160
+   20 CONTINUE                                                          ! D160
+      QPINDP = .FALSE.                                                  ! D160
+      CALL QPGAUS (NACT, GRAM, LDG, RHS, C, INFO)                       ! D160
+      IF (INFO.NE.0) RETURN                                             ! D160
+      BIG = 0.0D0                                                       ! D160
+      SCL = 0.0D0                                                       ! D160
+      DO 40 J = 1, NVAR                                                 ! D160
+         S = A(P,J)                                                     ! D160
+         SIZE = ABS(A(P,J))                                             ! D160
+         DO 30 K = 1, NACT                                              ! D160
+            T = A(IACT(K),J)*C(K)                                       ! D160
+            S = S - T                                                   ! D160
+            SIZE = SIZE + ABS(T)                                        ! D160
+   30    CONTINUE                                                       ! D160
+         BIG = MAX(BIG, ABS(S))                                         ! D160
+         SCL = MAX(SCL, SIZE)                                           ! D160
+   40 CONTINUE                                                          ! D160
+      QPINDP = BIG.GT.1.0D3*EPSILON(1.0D0)*SCL                          ! D160
+      RETURN                                                            ! D160
+      END                                                               ! D160
 C
       DOUBLE PRECISION FUNCTION QPKAPP (N, H, LDH, DIAG, L, LDL, E, Y)
 C     TRACE(H + DIAG*I) * TRACE((H + DIAG*I)^-1) FROM THE CHOLESKY
@@ -470,6 +675,186 @@ C     TIMES IT (ISSUE 22).  E AND Y ARE WORK ARRAYS OF LENGTH N.
       QPKAPP = TH*TI
       RETURN
       END
+C
+      SUBROUTINE QPLGN (N, NACT, GN, LDL, R, Y)                         ! D160
+C     Y = Y - GN R OVER THE FIRST NACT COLUMNS OF GN
+      INTEGER N, NACT, LDL, I, K                                        ! D160
+      DOUBLE PRECISION GN(LDL,*), R(*), Y(*), S                         ! D160
+      DO 20 I = 1, N                                                    ! D160
+         S = Y(I)                                                       ! D160
+         DO 10 K = 1, NACT                                              ! D160
+            S = S - GN(I,K)*R(K)                                        ! D160
+   10    CONTINUE                                                       ! D160
+         Y(I) = S                                                       ! D160
+   20 CONTINUE                                                          ! D160
+      RETURN                                                            ! D160
+      END                                                               ! D160
+C
+      SUBROUTINE QPHV (N, H, LDH, X, Y)                                 ! D160
+C     Y = H X, H READ FROM ITS LOWER TRIANGLE (THE PART QPROG READS)
+      INTEGER N, LDH, I, J                                              ! D160
+      DOUBLE PRECISION H(LDH,*), X(*), Y(*), S                          ! D160
+      DO 20 I = 1, N                                                    ! D160
+         S = 0.0D0                                                      ! D160
+         DO 10 J = 1, N                                                 ! D160
+            IF (I.GE.J) S = S + H(I,J)*X(J)                             ! D160
+            IF (I.LT.J) S = S + H(J,I)*X(J)                             ! D160
+   10    CONTINUE                                                       ! D160
+         Y(I) = S                                                       ! D160
+   20 CONTINUE                                                          ! D160
+      RETURN                                                            ! D160
+      END                                                               ! D160
+C
+      DOUBLE PRECISION FUNCTION QPCOND (NVAR, NACT, IACT, SGN, A, LDA,  ! D160
+     *                 H, LDH, L, LDL, GN, M, MC, LDM, RHS, R, Y, E)    ! D160
+C     D160: TRACE(H) * TRACE(P H P), P = (H+DIAG I)^-1 - GN M^-1 GN' THE
+C     INVERSE OF H + DIAG I ON THE DIRECTIONS THE ACTIVE ROWS LEAVE FREE
+C     (GN = (H+DIAG I)^-1 N, M = N'GN, N THE ACTIVE NORMALS).  A DIRECTION
+C     OF H'S OF EIGENVALUE LAMBDA COUNTS LAMBDA/(LAMBDA+DIAG)**2: 1/LAMBDA
+C     WHERE H DETERMINES IT, NOTHING ON H'S NULL DIRECTIONS (WHICH DIAG
+C     DECIDES) NOR ON THOSE THE ACTIVE ROWS PIN.  IT BOUNDS THE RELATIVE
+C     CHANGE OF SOL PER RELATIVE CHANGE OF H, ON THE DIRECTIONS H
+C     DETERMINES; WITH DIAG = 0 AND NO ACTIVE ROW, TR(H) TR(H^-1).  WHERE
+C     M IS SINGULAR (NUMERICALLY DEPENDENT ACTIVE ROWS) P = (H+DIAG I)^-1.
+C     MC, RHS, R, Y, E: WORK.  FREE OF H'S UNITS AND OF THE ROWS' SCALES.
+      INTEGER NVAR, NACT, IACT(*), LDA, LDH, LDL, LDM, I, J, K, INFO    ! D160
+      DOUBLE PRECISION SGN(*), A(LDA,*), H(LDH,*), L(LDL,*), GN(LDL,*), ! D160
+     *                 M(LDM,*), MC(LDM,*), RHS(*), R(*), Y(*), E(*),   ! D160
+     *                 TH, TR                                           ! D160
+      LOGICAL PROJ                                                      ! D160
+      CALL QPNMAT (NVAR, NACT, IACT, SGN, A, LDA, L, LDL, GN, MC, LDM,  ! D160
+     *             E)                                                   ! D160
+      PROJ = NACT.GT.0                                                  ! D160
+      TH = 0.0D0                                                        ! D160
+      TR = 0.0D0                                                        ! D160
+      DO 60 J = 1, NVAR                                                 ! D160
+         TH = TH + H(J,J)                                               ! D160
+         DO 10 I = 1, NVAR                                              ! D160
+            E(I) = 0.0D0                                                ! D160
+   10    CONTINUE                                                       ! D160
+         E(J) = 1.0D0                                                   ! D160
+         CALL QPCHSL (NVAR, L, LDL, E, Y)                               ! D160
+         IF (PROJ) THEN                                                 ! D160
+            DO 20 K = 1, NACT                                           ! D160
+               RHS(K) = GN(J,K)                                         ! D160
+               DO 15 I = 1, NACT                                        ! D160
+                  M(I,K) = MC(I,K)                                      ! D160
+   15          CONTINUE                                                 ! D160
+   20       CONTINUE                                                    ! D160
+            CALL QPGAUS (NACT, M, LDM, RHS, R, INFO)                    ! D160
+            PROJ = INFO.EQ.0                                            ! D160
+         END IF                                                         ! D160
+         IF (PROJ) CALL QPLGN (NVAR, NACT, GN, LDL, R, Y)               ! D160
+         CALL QPHV (NVAR, H, LDH, Y, E)                                 ! D160
+         DO 50 I = 1, NVAR                                              ! D160
+            TR = TR + Y(I)*E(I)                                         ! D160
+   50    CONTINUE                                                       ! D160
+   60 CONTINUE                                                          ! D160
+      QPCOND = TH*TR                                                    ! D160
+      RETURN                                                            ! D160
+      END                                                               ! D160
+C
+      LOGICAL FUNCTION QPUNBD (NVAR, NCON, NEQ, A, LDA, G, H, LDH, L,   ! D163
+     *                         LDL, SGN, IACT, NACT, SOL, GN, M, LDM,   ! D163
+     *                         RHS, R, D, E)                            ! D163
+C     D163: IS THE PROBLEM UNBOUNDED BELOW?  SOL IS A REGULARIZED
+C     ANSWER, OF THE PROBLEM OR OF ITS RECESSION PROBLEM (B = 0, WHOSE
+C     ANSWER DOES NOT DEPEND ON B'S SCALE): FAR OUT ALONG H'S NULL
+C     DIRECTIONS IF THE OBJECTIVE FALLS ALONG A FEASIBLE ONE.  TWO
+C     DIRECTIONS FROM IT, EACH DAMPING H'S RANGE BY DIAG/(LAMBDA+DIAG):
+C     D = P SOL, P = (H+DIAG I)^-1 - GN M^-1 GN' THE INVERSE ON THE
+C     DIRECTIONS THE ACTIVE ROWS LEAVE FREE (AS QPCOND), WHICH LEAVES
+C     THOSE ROWS WHERE THEY ARE; AND D = SOL - (H+DIAG I)^-1 H SOL, WHICH
+C     MAY LEAVE AN ACTIVE INEQUALITY (AS A DIRECTION OF NEGATIVE
+C     CURVATURE DOES).  EITHER CERTIFIES IT (QPRAY).  GN, M, RHS, R, D,
+C     E: WORK.
+      INTEGER NVAR, NCON, NEQ, LDA, LDH, LDL, LDM, IACT(*), NACT, J, K, ! D163
+     *        INFO                                                      ! D163
+      DOUBLE PRECISION A(LDA,*), G(*), H(LDH,*), L(LDL,*), SGN(*),      ! D163
+     *                 SOL(*), GN(LDL,*), M(LDM,*), RHS(*), R(*), D(*), ! D163
+     *                 E(*), S                                          ! D163
+      LOGICAL FREE, QPRAY                                               ! D163
+      QPUNBD = .TRUE.                                                   ! D163
+      CALL QPCHSL (NVAR, L, LDL, SOL, D)                                ! D163
+      FREE = .TRUE.                                                     ! D163
+      IF (NACT.GT.0) THEN                                               ! D163
+         CALL QPNMAT (NVAR, NACT, IACT, SGN, A, LDA, L, LDL, GN, M, LDM,! D163
+     *                E)                                                ! D163
+         DO 5 K = 1, NACT                                               ! D163
+            S = 0.0D0                                                   ! D163
+            DO 4 J = 1, NVAR                                            ! D163
+               S = S + GN(J,K)*SOL(J)                                   ! D163
+    4       CONTINUE                                                    ! D163
+            RHS(K) = S                                                  ! D163
+    5    CONTINUE                                                       ! D163
+         CALL QPGAUS (NACT, M, LDM, RHS, R, INFO)                       ! D163
+         FREE = INFO.EQ.0                                               ! D163
+         IF (FREE) CALL QPLGN (NVAR, NACT, GN, LDL, R, D)               ! D163
+      END IF                                                            ! D163
+      IF (FREE) THEN                                                    ! D163
+         IF (QPRAY(NVAR, NCON, NEQ, A, LDA, G, H, LDH, D, E)) RETURN    ! D163
+      END IF                                                            ! D163
+      CALL QPHV (NVAR, H, LDH, SOL, E)                                  ! D163
+      CALL QPCHSL (NVAR, L, LDL, E, D)                                  ! D163
+      DO 9 J = 1, NVAR                                                  ! D163
+         D(J) = SOL(J) - D(J)                                           ! D163
+    9 CONTINUE                                                          ! D163
+      QPUNBD = QPRAY(NVAR, NCON, NEQ, A, LDA, G, H, LDH, D, E)          ! D163
+      RETURN                                                            ! D163
+      END                                                               ! D163
+C
+      LOGICAL FUNCTION QPRAY (NVAR, NCON, NEQ, A, LDA, G, H, LDH, D, E) ! D163
+C     D163: DOES D CERTIFY THAT THE PROBLEM IS UNBOUNDED BELOW?  EVERY
+C     ROW STAYS FEASIBLE ALONG D (A(I,.)D = 0 FOR AN EQUALITY, >= 0 FOR AN
+C     INEQUALITY), AND THE OBJECTIVE FALLS WITHOUT BOUND ALONG IT: H D = 0
+C     AND G'D < 0, OR D'H D < 0.  EACH TO TAU = SQRT(EPS) OF THE
+C     PROBLEM'S SCALE ALONG D, D TAKEN TO MAX|D(J)| = 1 FIRST (A(I,.)D OF
+C     SUM |A(I,J)|, G'D OF SUM |G(J)|, H D OF MAX|H(I,J)|, D'H D OF
+C     MAX|H(I,J)| D'D): THE DIAG RULE'S OWN LEVEL, WHICH TAKES A
+C     CURVATURE BELOW IT FOR NONE.  E: WORK.
+      INTEGER NVAR, NCON, NEQ, LDA, LDH, I, J                           ! D163
+      DOUBLE PRECISION A(LDA,*), G(*), H(LDH,*), D(*), E(*), TAU, HMAX, ! D163
+     *                 DMAX, DD, CURV, GD, GS, S, SIZE, QPHMAX          ! D163
+      LOGICAL FLAT                                                      ! D163
+      QPRAY = .FALSE.                                                   ! D163
+      TAU = SQRT(EPSILON(1.0D0))                                        ! D163
+      DMAX = 0.0D0                                                      ! D163
+      DO 5 J = 1, NVAR                                                  ! D163
+         DMAX = MAX(DMAX, ABS(D(J)))                                    ! D163
+    5 CONTINUE                                                          ! D163
+      IF (DMAX.EQ.0.0D0) RETURN                                         ! D163
+      DD = 0.0D0                                                        ! D163
+      GD = 0.0D0                                                        ! D163
+      GS = 0.0D0                                                        ! D163
+      DO 10 J = 1, NVAR                                                 ! D163
+         D(J) = D(J)/DMAX                                               ! D163
+         DD = DD + D(J)*D(J)                                            ! D163
+         GD = GD + G(J)*D(J)                                            ! D163
+         GS = GS + ABS(G(J))                                            ! D163
+   10 CONTINUE                                                          ! D163
+      HMAX = QPHMAX(NVAR, H, LDH)                                       ! D163
+      CALL QPHV (NVAR, H, LDH, D, E)                                    ! D163
+      FLAT = .TRUE.                                                     ! D163
+      CURV = 0.0D0                                                      ! D163
+      DO 20 I = 1, NVAR                                                 ! D163
+         IF (ABS(E(I)).GT.TAU*HMAX) FLAT = .FALSE.                      ! D163
+         CURV = CURV + D(I)*E(I)                                        ! D163
+   20 CONTINUE                                                          ! D163
+      IF (.NOT.((FLAT .AND. GD.LT.-TAU*GS) .OR.                         ! D163
+     *          CURV.LT.-TAU*HMAX*DD)) RETURN                           ! D163
+      DO 40 I = 1, NCON                                                 ! D163
+         S = 0.0D0                                                      ! D163
+         SIZE = 0.0D0                                                   ! D163
+         DO 30 J = 1, NVAR                                              ! D163
+            S = S + A(I,J)*D(J)                                         ! D163
+            SIZE = SIZE + ABS(A(I,J))                                   ! D163
+   30    CONTINUE                                                       ! D163
+         IF (I.LE.NEQ) S = -ABS(S)                                      ! D163
+         IF (S.LT.-TAU*SIZE) RETURN                                     ! D163
+   40 CONTINUE                                                          ! D163
+      QPRAY = .TRUE.                                                    ! D163
+      RETURN                                                            ! D163
+      END                                                               ! D163
 C
       DOUBLE PRECISION FUNCTION QPHMAX (N, H, LDH)
 C     THE LARGEST |H(I,J)| OF THE LOWER TRIANGLE (THE PART QPROG READS).
@@ -561,6 +946,29 @@ C     THE STATUS OF THE LAST QPROG CALL (FOR THE PYTHON FACE).
       ISTAT_OUT = ISTAT
       RETURN
       END
+C
+      SUBROUTINE QPCOND_GET (QCOND_OUT)                                 ! D160
+C     QCOND OF THE LAST SOLVED CALL (FOR THE PYTHON FACE; QPCOND)
+      DOUBLE PRECISION QCOND_OUT, QCOND                                 ! D160
+      COMMON /QPCND/ QCOND                                              ! D160
+      QCOND_OUT = QCOND                                                 ! D160
+      RETURN                                                            ! D160
+      END                                                               ! D160
+C
+      SUBROUTINE QPWARN_GET (NWARN_OUT, WERR_OUT, RESET)                ! D161
+C     HOW MANY REAL*4 QPROG CALLS SINCE THE LAST RESET SINGLE PRECISION
+C     COULD NOT CARRY, AND THE WORST RELATIVE ERROR; RESET <> 0 CLEARS
+      INTEGER NWARN_OUT, RESET, NWARN                                   ! D161
+      DOUBLE PRECISION WERR_OUT, WERR                                   ! D161
+      COMMON /QPWARN/ WERR, NWARN                                       ! D161
+      NWARN_OUT = NWARN                                                 ! D161
+      WERR_OUT = WERR                                                   ! D161
+      IF (RESET.NE.0) THEN                                              ! D161
+         NWARN = 0                                                      ! D161
+         WERR = 0.0D0                                                   ! D161
+      END IF                                                            ! D161
+      RETURN                                                            ! D161
+      END                                                               ! D161
 C
       SUBROUTINE UMACH (N, NUNIT)
 C     IMSL UMACH: N=1 STANDARD INPUT UNIT, N=2 STANDARD OUTPUT UNIT.

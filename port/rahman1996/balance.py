@@ -6,21 +6,27 @@ the cycle, the quadratic program of section 4.4 for the nine point masses, and t
 quantities of Tables 5.1-5.7 before (equal point masses) and after (the QP's masses).
 
 The QP is solved by the port of our QPROG stand-in (``port/qprog.py``: Goldfarb-Idnani, the
-method of IMSL's QPROG, equal to the legacy build bit for bit).  Its Hessian is singular here
-(the split of the crank's three pair masses enters nothing, register D057), so, as IMSL
-documents for QPROG, H + DIAG*I is used with DIAG the smallest shift found by raising
-Cholesky pivots (``hessian_shift``).
+method of IMSL's QPROG, equal to the legacy build bit for bit).  Its Hessian is singular by
+design (the split of the crank's three pair masses enters nothing, register D057), so, as
+IMSL documents for QPROG, H + DIAG*I is used with DIAG the smallest shift found by raising
+Cholesky pivots (``hessian_shift``): the answer is the regularized problem's (QPROG's
+``regularized``), which on H's null directions is the smallest-norm split, the equal one,
+and elsewhere differs from H's by DIAG / lambda.  That is the design, not a loss, so the
+CSSP does not give QPROG's warning for it; it warns (``PrecisionWarning``) where the bound on
+the answer's relative error, ``qprog.relative_error`` with the unit of the Hessian's
+precision (2**-24 with the listing's REAL*4, eps in double), reaches 1 (D161).
 
 Units: inch, lbf, second, lb*s^2/in; crank angles in degrees at the interface.
 """
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
 
-from ...checks import masses
-from ...errors import QPError, SingularPositionError
+from ...checks import cssp_speed, masses
+from ...errors import PrecisionWarning, QPError, SingularPositionError
 from . import qprog
 from .data import QP_EQUALITIES, QP_ROWS, Constants, CsspInputs, qp_constraints
 from ..slider_crank.geometry import initial_estimate
@@ -38,11 +44,12 @@ TABLES = ("5_2", "5_3", "5_4", "5_5", "5_6", "5_7")
 
 
 def hessian_shift(h: np.ndarray) -> float:
-    """DIAG: the multiple of I that makes H positive definite, by our QPROG's rule (D050).
+    """DIAG: the multiple of I that our QPROG adds to H (D050, D160).
 
-    Cholesky pivot by pivot on H scaled to a largest entry in [1, 4); a pivot below
-    sqrt(eps)*max|H_ij| raises DIAG by the shortfall and restarts.  0 for a positive
-    definite H.  The rule is port/qprog.py's, operation for operation the FORTRAN's.
+    0 where H is positive definite to its rounding (every Cholesky pivot at least n eps
+    max|H_ij| and tr(H) tr(H^-1) within 1/(n eps)); else Cholesky pivot by pivot on H scaled
+    to a largest entry in [1, 4), a pivot below sqrt(eps)*max|H_ij| raising DIAG by the
+    shortfall.  The rule is port/qprog.py's, operation for operation the FORTRAN's.
     """
     return qprog.hessian_shift(h)
 
@@ -50,19 +57,32 @@ def hessian_shift(h: np.ndarray) -> float:
 def solve_qp(h: np.ndarray, rows: np.ndarray = QP_ROWS, bounds=None, equalities: int = QP_EQUALITIES):
     """min x'Hx/2 s.t. the first ``equalities`` rows x = bounds, the rest x >= bounds.
 
-    Solved by the port of our QPROG (port/qprog.py, equal to the legacy build bit for bit)
-    on H + DIAG*I.  Returns (x, diag).  Raises QPError when the QP has no solution
-    (inconsistent constraints, QPROG's iteration limit, a stalled DIAG rule) or H is
-    not finite.
+    Solved by the port of our QPROG (port/qprog.py, equal to the legacy build bit for bit),
+    on H + DIAG*I where DIAG > 0 (by design here: D057; QPROG's warning is not given).
+    Returns (x, diag).  Raises QPError when the QP has no solution (inconsistent
+    constraints, unbounded, QPROG's iteration limit) or H is not finite.
     """
+    result = _balancing_qp(h, rows, bounds, equalities)
+    return result["sol"], result["diag"]
+
+
+def _balancing_qp(h, rows, bounds, equalities) -> dict:
+    """``solve_qp``'s QPROG result (``qprog.solve``: no warning; the caller reads it)."""
     h = np.asarray(h, dtype=float)
     if not np.all(np.isfinite(h)):
         raise QPError("the balancing QP has a non-finite Hessian")
     try:
-        res = qprog.qprog(h, np.zeros(len(h)), rows, np.asarray(bounds, float), equalities)
+        return qprog.solve(h, np.zeros(len(h)), rows, np.asarray(bounds, float), equalities)
     except QPError as exc:
         raise QPError(f"the balancing QP has no solution: {exc}") from exc
-    return res["sol"], res["diag"]
+
+
+def precision_warning(worst: float) -> PrecisionWarning:
+    """The CSSP's warning where a QP's answer is not carried by the Hessian's precision
+    (``worst``: the largest ``qprog.relative_error`` at or above 1; register D161)."""
+    return PrecisionWarning("CSSP: the balancing QP's masses are not determined by its Hessian: the bound on "
+                            "their relative error, on the directions the Hessian determines, reaches 1 (register D161)",
+                            relative_error=worst)
 
 
 @dataclass
@@ -110,25 +130,31 @@ def balance(inputs: CsspInputs = CsspInputs(), quirks: CsspQuirks = CSSP_PRINTED
     With ``open_loop_model`` the listing's two passes run: OF accumulates over both, the
     tables use the first QP's answer, Table 5.1 the second's (as printed).  ``solution``
     (9 masses), if given, replaces every QP's answer, as the legacy face's (D055).
+    ValueError for a speed below 2**-126 rpm (D164); a ``PrecisionWarning`` where a QP's
+    masses are not carried by its Hessian's precision (D161, as the legacy face).
     """
     if not isinstance(inputs, CsspInputs):
         raise TypeError(f"inputs must be CsspInputs, got {type(inputs).__name__}")
     if not isinstance(quirks, CsspQuirks):
         raise TypeError(f"quirks must be CsspQuirks (CSSP_PRINTED, CSSP_CORRECTED, ...), got {type(quirks).__name__}")
+    cssp_speed(inputs.rpm)
     given = None if solution is None else masses("solution", solution)
     c = Constants.of(inputs, quirks.cssp_real4)
     single = (lambda v: np.asarray(v, np.float32).astype(float)) if quirks.cssp_real4 else np.asarray
     counted = slice(0, 37 if quirks.objective_37_positions else 36)
     rows, bounds, equalities = qp_constraints(c, quirks.qp_cg_masses_free, quirks.qp_data_rounded,
                                               quirks.cssp_real4)
-    passes, accumulated, solutions, first_qp = [], np.zeros((9, 9)), [], None
+    unit = qprog.REAL4_UNIT if quirks.cssp_real4 else qprog.EPS
+    passes, accumulated, solutions, first_qp, worst = [], np.zeros((9, 9)), [], None, 0.0
     for sweep in _passes(inputs, quirks, c):
         passes.append(sweep)
         accumulated = accumulated + sweep.forms[counted].sum(axis=0)
         hessian = single(2.0 * accumulated)
-        x, diag = solve_qp(hessian, rows, bounds, equalities)
-        solutions.append(single(x if given is None else given))
-        first_qp = first_qp or (hessian, diag)
+        result = _balancing_qp(hessian, rows, bounds, equalities)
+        error = qprog.relative_error(hessian, result, unit)       # as QPROG's REAL*4 entry (D161)
+        worst = error if error >= 1.0 and error > worst else worst
+        solutions.append(single(result["sol"] if given is None else given))
+        first_qp = first_qp or (hessian, result["diag"])
     last, after = passes[-1], solutions[0]
     before = c.point_masses
     columns = [objective(last.forms, before, quirks),
@@ -140,6 +166,8 @@ def balance(inputs: CsspInputs = CsspInputs(), quirks: CsspQuirks = CSSP_PRINTED
     bad = ~np.isfinite(table).all(axis=1)
     if bad.any():
         raise SingularPositionError("CSSP: a non-finite value in the tables", float(CRANK_DEG[np.argmax(bad)]))
+    if worst:
+        warnings.warn(precision_warning(worst), stacklevel=2)
     return {"table": table, "inertia": _inertia_table(c, solutions[-1]),
             "solution": after, "solution_table51": solutions[-1], "hessian": first_qp[0],
             "diag": first_qp[1]}

@@ -1,48 +1,61 @@
 """Our QPROG stand-in (legacy/src/imsl_qprog.f, DQPROG; register D050), ported: ``qprog``.
 
 Minimises g'x + x'Hx/2 subject to a[:neq] x = b[:neq] and a[neq:] x >= b[neq:] by the
-Goldfarb-Idnani dual active-set method as DQPROG writes it.  If H is not positive definite,
-H + DIAG*I is used, DIAG found by raising Cholesky pivots (``hessian_shift``, the DIAG rule:
-a pivot below sqrt(eps)*max|H_ij| raises DIAG by the shortfall and the factorization
-restarts).  Only the diagonal and the lower triangle of H are read, as in the FORTRAN.
+Goldfarb-Idnani dual active-set method as DQPROG writes it.  Only the diagonal and the lower
+triangle of H are read, as in the FORTRAN.
 
 Every operation is DQPROG's (with QPCHSL and QPGAUS) in DQPROG's order: sums run in the
 FORTRAN's loop order from the same start, the comparisons and tolerances are its own, MAX
 and MIN pick what gfortran's maxsd/minsd pick, and numba compiles without fastmath (no
 fused multiply-add, as the FORTRAN is built with -ffp-contract=off).  The result equals
-``linkrepro.legacy.rahman1996.qprog`` bit for bit (tests/test_differential_qprog.py).
+``linkrepro.legacy.rahman1996.qprog`` bit for bit, warnings included
+(tests/rahman1996/test_differential_qprog.py).
 
-Two faults of the stand-in, found by tests/test_differential_qprog.py, are mended in the
-FORTRAN and here alike (register D050): where raising DIAG by the shortfall would not change
-it in floating point (a negative H_jj, e.g. H = diag(-1.3, 5.3)), DIAG takes the next number
-up (the FORTRAN repeated GO TO 100 forever); and the active set can take numerically
-dependent normals before QPGAUS finds M singular, more than there are variables, so GN, M
-and RHS are sized by the constraints (the FORTRAN's, sized by the variables, overflowed).
-Non-finite a, b, h or g are ValueError and a non-finite solution or DIAG (overflow) is
-QPError, in both faces (``linkrepro.checks``).
+The contract (tests/rahman1996/test_qprog_contract.py, against 40-digit KKT solves, SciPy
+and numpy):
 
-Its tolerances were absolute (D050: a row scaled by 1e13, or H by 1e16, gave a wrong
-answer or "inconsistent"), so DQPROG now solves the problem in its own units (``_dqprog``):
-each row of a and b scaled by a power of two to a largest entry in [1, 2), H and g by a
-power of four to a largest |H_ij| in [1, 4), the Goldfarb-Idnani method (QPSOLV,
-``_solve``) run on that, DIAG and the multipliers scaled back.  A problem and its copies
-with rows, H and g scaled by any factors get the same answer up to rounding, and by powers
-of two (four for H) the same bits.
+- **Definite H, as given** (D160).  Where the Cholesky factorization of H has every pivot at
+  least n eps max|H_ij| and kappa = tr(H) tr(H^-1) (>= cond(H)) is at most 1/(n eps), no
+  perturbation of the size of H's rounding makes it singular: H is solved as given, DIAG =
+  0, to its conditioning (condition 1e8..1e14: errors within 0.3 cond eps, measured).
+  There QPRFN refines the stationarity as well as the active rows, a row whose multiplier
+  it leaves negative is dropped, and a new row's normal independent of the active ones in
+  the plain sense (``_independent``) is stepped to even where ZN lies below 1e3 eps ZR.
+- **DIAG** (D050).  Else H + DIAG I is used, DIAG found by the rule of statements 5-130
+  (``hessian_shift``: from 0, raised by the shortfall where a pivot falls below sqrt(eps)
+  max|H_ij|; a shortfall below DIAG's last bit takes the next number up): the answer is the
+  regularized problem's, min g'x + x'(H + DIAG I)x/2.  ``regularized`` says so and the
+  public ``qprog`` warns ``PrecisionWarning`` naming DIAG; ``solve`` does not, for a caller
+  that reads the field (the CSSP, whose H is singular by design: D057).
+- **What is warned** (D160, D161).  ``condition`` = tr(H) tr(P H P), P the inverse of
+  H + DIAG I on the directions the final active rows leave free: >= the condition of the
+  answer on the directions H determines (H's null directions, DIAG decides them, and those
+  the active rows pin count for nothing).  ``relative_error(h, result, unit)`` =
+  condition (unit + DIAG/tr H) bounds the answer's relative error there, ``unit`` the
+  rounding of H's data; ``qprog`` warns where it reaches 1 (unit eps), and the REAL*4 entry
+  counts the calls where it does with unit 2**-24 (COMMON /QPWARN/; the CSSP's warning).
+- **Rows** (D050, D162).  Every row holds at ``sol`` to GTOL = eps (1e3 + 8 kappa) of
+  |a_i| |sol| + |b_i|, kappa = tr(H + DIAG I) tr((H + DIAG I)^-1) (``_kappa``): the method is
+  not backward stable and its answers may miss rows by ~30 eps kappa, so no sol is returned
+  that misses one by more (``MISSES_MESSAGE``).  Rows are tested relative to that size
+  (``_row``), z = 0 unless ZN > 1e3 eps ZR (ZR the size of ZN's terms), a row that depends
+  on the active ones and holds to GTOL (a repeated row, 0 x = 0, an inequality repeating an
+  active equality) is held: not added, re-examined when sol moves, not in ``active``.
+- **Unbounded** (D163).  Where DIAG > 0, a direction from the regularized answer (of the
+  problem, then of its recession problem, b = 0) along which every row stays feasible and
+  the objective falls without bound, to sqrt(eps) of the problem's scale (``_unbounded``):
+  QPError 'unbounded'.  A convex (semidefinite) H's is found so; an indefinite H's only where
+  the regularized answer moves along a direction of negative curvature (else the answer is
+  the regularized problem's, with the DIAG warning).
+- **Errors**.  QPError: inconsistent constraints, no solution within GTOL, unbounded, the
+  iteration limit, a non-finite answer (overflow); ValueError/TypeError for bad arguments
+  (shapes, sizes, non-finite h, g, a or b: ``linkrepro.checks``).
 
-Infeasible problems were returned as solved (D050, found by the fuzz): where a violated
-row's normal depends on the active ones, z = 0 up to rounding, but the test ZN > eps |n+|^2
-was absolute and rounding passed it, so the method stepped S/ZN ~ 1e14 along noise and added
-the row (more active rows than variables), leaving others violated.  Mended in the FORTRAN
-and here alike: z = 0 unless ZN > 1e3 eps ZR, ZR the size of ZN's terms; the row tests are
-relative to |a_i| |x| + |b_i| (``_row``; a bound at x ~ 1e-20 was ignored) and the drop test
-to r alone (u is in g's units: at x ~ 1e150 nothing could be dropped); an equality that holds
-and depends on the active rows (a repeated row, 0 x = 0) is held, not refused; after a full
-step, where rounding left an active row off by more than GTOL, sol is projected back
-(``_refine``); and no sol is returned that misses a row by more than GTOL = eps (1e3 +
-8 kappa) of its size, kappa = tr(H + DIAG I) tr((H + DIAG I)^-1) >= its condition number
-(``_kappa``), the method's own rounding: it is not backward stable, its answers miss rows by
-up to ~30 eps cond(H + DIAG I), 4.5e-9 on the corrected CSSP example's QP, whose bits are
-unchanged.  Otherwise QPError (``MISSES_MESSAGE``, status 4).
+Scale: DQPROG solves the problem in its own units (``_dqprog``): each row of a and b scaled
+by a power of two to a largest entry in [1, 2), H and g by a power of four to a largest
+|H_ij| in [1, 4), QPSOLV (``_solve``) run on that, DIAG and the multipliers scaled back: a
+copy scaled by such powers gives the same bits (D050).  Work arrays are sized by the
+constraints (numerically dependent normals can enter before QPGAUS finds M singular).
 
 Units are the caller's; in the CSSP balancing problem x holds the nine point masses
 (lb*s^2/in) and H is twice the objective's quadratic form summed over the cycle.
@@ -50,22 +63,33 @@ Units are the caller's; in the CSSP balancing problem x holds the nine point mas
 from __future__ import annotations
 
 import math
+import warnings
 
 import numpy as np
 from numba import njit
 
 from ...checks import finite_matrix, qp_arguments
-from ...errors import QPError
+from ...errors import PrecisionWarning, QPError
 
 #: DQPROG's PARAMETERs: at most 60 variables and 200 constraints
 MAXV, MAXC = 60, 200
-#: status codes, COMMON /QPSTAT/ (MISSES: QPSOLV's last guard, D050)
-SOLVED, INCONSISTENT, ITERATION_LIMIT, BAD_ARGUMENTS, MISSES = 0, 1, 2, 3, 4
+#: status codes, COMMON /QPSTAT/ (MISSES: QPSOLV's last guard, D050; UNBOUNDED: D163)
+SOLVED, INCONSISTENT, ITERATION_LIMIT, BAD_ARGUMENTS, MISSES, UNBOUNDED = 0, 1, 2, 3, 4, 5
 #: QPError's message for status 4
 MISSES_MESSAGE = ("QPROG: the solution found misses a constraint by more than the method's rounding "
                   "(the constraints are inconsistent within rounding, or the problem too ill-conditioned)")
+#: QPError's message for each failing status, in both faces
+STATUS_MESSAGES = {
+    INCONSISTENT: "QPROG: the constraints are inconsistent",
+    ITERATION_LIMIT: "QPROG: iteration limit reached",
+    MISSES: MISSES_MESSAGE,
+    UNBOUNDED: ("QPROG: the problem is unbounded below (a direction along which every constraint stays "
+                "feasible and the objective falls without bound, to sqrt(eps) of its terms; D163)"),
+}
 #: EPSILON(1.0D0)
 EPS = float(np.finfo(np.float64).eps)
+#: the unit roundoff of REAL*4, 0.5*EPSILON(1.0E0): the precision of the REAL*4 entry's data (D161)
+REAL4_UNIT = 2.0 ** -24
 
 
 @njit(cache=True)
@@ -86,8 +110,12 @@ def _hmax(h):
 
 @njit(cache=True)
 def _cholesky_shift(h, low):
-    """Statements 5-130: L L' = H + DIAG*I, raising DIAG where a pivot falls below TINY =
-    sqrt(eps) * max |H_ij| (lower triangle).
+    """Statements 5-130: L L' = H + DIAG*I.  First with DIAG = 0 and TINY = n eps max |H_ij|
+    (lower triangle), the rounding of a pivot: where every pivot passes and kappa =
+    tr(H) tr(H^-1) (``_kappa``, >= cond(H)) stays within 1/(n eps), no perturbation of H of
+    the size of its rounding makes it singular: H is positive definite to its rounding and
+    DIAG = 0 (D160).  Else the DIAG rule, unchanged: from DIAG = 0, DIAG raised where a pivot
+    falls below TINY = sqrt(eps) max |H_ij|.
 
     Fills ``low`` (L, lower triangle) and returns DIAG.  A shortfall below DIAG's last bit
     takes the next number up (DNEW = NEAREST(DIAG, 1.0D0)).
@@ -96,7 +124,8 @@ def _cholesky_shift(h, low):
     scale = _hmax(h)
     if scale == 0.0:
         scale = 1.0
-    tiny = math.sqrt(EPS) * scale
+    definite = True
+    tiny = float(n) * EPS * scale
     diag = 0.0
     while True:                                           # 100 CONTINUE
         restart = False
@@ -104,6 +133,11 @@ def _cholesky_shift(h, low):
             pivot = h[j, j] + diag
             for k in range(j):                            # DO 110: - L(J,K)**2
                 pivot = pivot - low[j, k] * low[j, k]
+            if pivot < tiny and definite:                 # not definite to its rounding: the DIAG rule
+                definite = False
+                tiny = math.sqrt(EPS) * scale
+                restart = True
+                break                                     # GO TO 100
             if pivot < tiny:
                 raised = diag + (tiny - pivot)
                 if raised <= diag:
@@ -117,6 +151,10 @@ def _cholesky_shift(h, low):
                 for k in range(j):                        # DO 120
                     s = s - low[i, k] * low[j, k]
                 low[i, j] = s / low[j, j]
+        if not restart and definite and float(n) * EPS * _kappa(h, 0.0, low, np.empty(n), np.empty(n)) > 1.0:
+            definite = False                              # kappa past 1/(n eps): the DIAG rule
+            tiny = math.sqrt(EPS) * scale
+            restart = True
         if not restart:
             return diag
 
@@ -205,10 +243,14 @@ def _nmat(low, a, sgn, iact, nact, gn, m, e):
 
 
 @njit(cache=True)
-def _refine(low, a, b, sgn, iact, nact, gtol, sol, u, gn, m, rhs, r, w):
-    """QPRFN: where an active row misses its bound by more than gtol of its size (rounding
-    in the steps), at most two sweeps of sol += GN y, u += y with (N'H^-1N) y = -(N'sol - b):
-    back on the active rows, H sol + g = N u still holding."""
+def _refine(h, g, diag, low, a, b, sgn, iact, nact, gtol, stol, sol, u, gn, m, rhs, r, w, e):
+    """QPRFN: where an active row misses its bound by more than gtol of its size, or a
+    component of the stationarity residual e = (H + DIAG I) sol + g - N u by more than stol of
+    the size of its terms (D160: the steps' rounding, from far out where H is ill-conditioned;
+    stol = 1e3 eps where H is solved as given, gtol where DIAG > 0, which leaves the CSSP's
+    QPs as they were), at most two sweeps of refinement of the KKT system on the active set:
+    sol += GN y - (H + DIAG I)^-1 e, u += y, (N'H^-1N) y = N'(H + DIAG I)^-1 e - (N'sol - b).
+    Without a stationarity miss e is not used (sol += GN y, as D050 had it)."""
     nvar = sol.shape[0]
     for _ in range(2):                                    # DO 40 SWEEP
         off = False
@@ -217,18 +259,78 @@ def _refine(low, a, b, sgn, iact, nact, gtol, sol, u, gn, m, rhs, r, w):
             rhs[k] = -(sgn[iact[k]] * s)
             if abs(s) > gtol * size:
                 off = True
-        if not off:
+        stationary = True
+        for j in range(nvar):                             # DO 14
+            s = g[j] + diag * sol[j]
+            size = abs(g[j]) + abs(diag * sol[j])
+            for i in range(nvar):                         # DO 12
+                hji = h[j, i] if j >= i else h[i, j]
+                s = s + hji * sol[i]
+                size = size + abs(hji * sol[i])
+            for k in range(nact):                         # DO 13
+                t = sgn[iact[k]] * a[iact[k], j] * u[k]
+                s = s - t
+                size = size + abs(t)
+            e[j] = s
+            if abs(s) > stol * size:
+                stationary = False
+        if not off and stationary:
             return
         _nmat(low, a, sgn, iact, nact, gn, m, w)
+        if not stationary:
+            _chsl(low, e, w)                              # W = (H + DIAG I)^-1 E
+            for k in range(nact):                         # DO 18
+                s = rhs[k]
+                for j in range(nvar):                     # DO 17
+                    s = s + sgn[iact[k]] * a[iact[k], j] * w[j]
+                rhs[k] = s
         if _gaus(nact, m, rhs, r) != 0:
             return
         for j in range(nvar):                             # DO 30
             s = sol[j]
+            if not stationary:
+                s = s - w[j]
             for k in range(nact):                         # DO 20
                 s = s + gn[k, j] * r[k]
             sol[j] = s
         for k in range(nact):                             # DO 35
             u[k] = u[k] + r[k]
+
+
+@njit(cache=True)
+def _independent(a, iact, nact, p, gram, rhs, c):
+    """QPINDP (D160): is row p's normal independent of the active normals, in the plain
+    (Euclidean) sense?  The least-squares residual rho = n+ - N c, (N'N) c = N'n+, stands in
+    some component above 1e3 eps of the largest size of its terms (|n+_j| + sum |N_jk c_k|);
+    not where N'N is singular.  Where H is ill-conditioned ZN falls below 1e3 eps ZR for
+    independent rows too (ZR grows with cond(H), ZN with the reduced problem's), while a
+    dependent normal (a repeated or summed row, more rows than variables) leaves rho at its
+    rounding.  ``gram``, ``rhs``, ``c``: work."""
+    nvar = a.shape[1]
+    for i in range(nact):                                 # DO 20
+        for k in range(nact):                             # DO 10
+            s = 0.0
+            for j in range(nvar):                         # DO 5
+                s = s + a[iact[i], j] * a[iact[k], j]
+            gram[i, k] = s
+        s = 0.0
+        for j in range(nvar):                             # DO 15
+            s = s + a[iact[i], j] * a[p, j]
+        rhs[i] = s
+    if _gaus(nact, gram, rhs, c) != 0:
+        return False
+    big = 0.0
+    scale = 0.0
+    for j in range(nvar):                                 # DO 40
+        s = a[p, j]
+        size = abs(a[p, j])
+        for k in range(nact):                             # DO 30
+            t = a[iact[k], j] * c[k]
+            s = s - t
+            size = size + abs(t)
+        big = _max(big, abs(s))
+        scale = _max(scale, size)
+    return big > 1.0e3 * EPS * scale
 
 
 @njit(cache=True)
@@ -249,8 +351,146 @@ def _kappa(h, diag, low, e, y):
 
 
 @njit(cache=True)
+def _less_gn(gn, nact, r, y):
+    """QPLGN: y = y - GN r over the first nact columns of GN."""
+    for i in range(y.shape[0]):                           # DO 20
+        s = y[i]
+        for k in range(nact):                             # DO 10
+            s = s - gn[k, i] * r[k]
+        y[i] = s
+
+
+@njit(cache=True)
+def _hv(h, x, y):
+    """QPHV: y = H x, H read from its lower triangle."""
+    n = x.shape[0]
+    for i in range(n):                                    # DO 20
+        s = 0.0
+        for j in range(n):                                # DO 10
+            if i >= j:
+                s = s + h[i, j] * x[j]
+            else:
+                s = s + h[j, i] * x[j]
+        y[i] = s
+
+
+@njit(cache=True)
+def _condition(h, low, a, sgn, iact, nact, gn, m, rhs, r, y, e):
+    """QPCOND (D160): tr(H) tr(P H P), P = (H + DIAG I)^-1 - GN M^-1 GN' the inverse of
+    H + DIAG I on the directions the active rows leave free.  A direction of H's of
+    eigenvalue lambda counts lambda/(lambda + DIAG)^2: 1/lambda where H determines it,
+    nothing on H's null directions (DIAG decides those) nor on those the active rows pin.
+    It bounds the relative change of sol per relative change of H on the directions H
+    determines; with DIAG = 0 and no active row it is tr(H) tr(H^-1).  Where M is singular
+    (numerically dependent active rows), P = (H + DIAG I)^-1.  Free of units."""
+    nvar = low.shape[0]
+    size = max(nact, 1)
+    mc = np.empty((size, size))
+    _nmat(low, a, sgn, iact, nact, gn, mc, e)
+    project = nact > 0
+    th = 0.0
+    tr = 0.0
+    for j in range(nvar):                                 # DO 60
+        th = th + h[j, j]
+        for i in range(nvar):                             # DO 10
+            e[i] = 0.0
+        e[j] = 1.0
+        _chsl(low, e, y)
+        if project:
+            for k in range(nact):                         # DO 20
+                rhs[k] = gn[k, j]
+                for i in range(nact):                     # DO 15
+                    m[i, k] = mc[i, k]
+            project = _gaus(nact, m, rhs, r) == 0
+        if project:
+            _less_gn(gn, nact, r, y)
+        _hv(h, y, e)
+        for i in range(nvar):                             # DO 50
+            tr = tr + y[i] * e[i]
+    return th * tr
+
+
+@njit(cache=True)
+def _unbounded(h, g, a, neq, low, sgn, iact, nact, sol, gn, m, rhs, r, d, e):
+    """QPUNBD (D163): is the problem unbounded below?  ``sol`` is a regularized answer, of the
+    problem or of its recession problem (b = 0, whose answer does not depend on b's scale):
+    far out along H's null directions if the objective falls along a feasible one.  Two
+    directions from it, each damping H's range by DIAG/(lambda + DIAG): d = P sol, P =
+    (H + DIAG I)^-1 - GN M^-1 GN' the inverse on the directions the active rows leave free
+    (as ``_condition``), which leaves those rows where they are; and d = sol - (H + DIAG I)^-1
+    H sol, which may leave an active inequality (as a direction of negative curvature does).
+    Either certifies it (``_ray``).  ``gn``, ``m``, ``rhs``, ``r``, ``d``, ``e``: work."""
+    nvar = sol.shape[0]
+    _chsl(low, sol, d)
+    free = True
+    if nact > 0:
+        _nmat(low, a, sgn, iact, nact, gn, m, e)
+        for k in range(nact):                             # DO 5
+            s = 0.0
+            for j in range(nvar):                         # DO 4
+                s = s + gn[k, j] * sol[j]
+            rhs[k] = s
+        free = _gaus(nact, m, rhs, r) == 0
+        if free:
+            _less_gn(gn, nact, r, d)
+    if free and _ray(h, g, a, neq, d, e):
+        return True
+    _hv(h, sol, e)
+    _chsl(low, e, d)
+    for j in range(nvar):                                 # DO 9
+        d[j] = sol[j] - d[j]
+    return _ray(h, g, a, neq, d, e)
+
+
+@njit(cache=True)
+def _ray(h, g, a, neq, d, e):
+    """QPRAY (D163): does d certify that the problem is unbounded below?  Every row stays
+    feasible along d (a_i d = 0 for an equality, >= 0 for an inequality) and the objective
+    falls without bound along it, H d = 0 and g'd < 0, or d'H d < 0; each to tau = sqrt(eps)
+    of the problem's scale along d, d taken to max|d_j| = 1 first (a_i d of sum_j |a_ij|,
+    g'd of sum_j |g_j|, H d of max|H_ij|, d'H d of max|H_ij| d'd): the DIAG rule's own level,
+    which takes a curvature below it for none.  ``e``: work."""
+    nvar, ncon = d.shape[0], a.shape[0]
+    tau = math.sqrt(EPS)
+    dmax = 0.0
+    for j in range(nvar):                                 # DO 5
+        dmax = _max(dmax, abs(d[j]))
+    if dmax == 0.0:
+        return False
+    dd = 0.0
+    gd = 0.0
+    gs = 0.0
+    for j in range(nvar):                                 # DO 10
+        d[j] = d[j] / dmax
+        dd = dd + d[j] * d[j]
+        gd = gd + g[j] * d[j]
+        gs = gs + abs(g[j])
+    hmax = _hmax(h)
+    _hv(h, d, e)
+    flat = True
+    curv = 0.0
+    for i in range(nvar):                                 # DO 20
+        if abs(e[i]) > tau * hmax:
+            flat = False
+        curv = curv + d[i] * e[i]
+    if not ((flat and gd < -tau * gs) or curv < -tau * hmax * dd):
+        return False
+    for i in range(ncon):                                 # DO 40
+        s = 0.0
+        size = 0.0
+        for j in range(nvar):                             # DO 30
+            s = s + a[i, j] * d[j]
+            size = size + abs(a[i, j])
+        if i < neq:
+            s = -abs(s)
+        if s < -tau * size:
+            return False
+    return True
+
+
+@njit(cache=True)
 def _dqprog(h, g, a, b, neq):
-    """DQPROG on validated arguments: (status, DIAG, SOL, NACT, IACT, ALAMDA).
+    """DQPROG on validated arguments: (status, DIAG, SOL, NACT, IACT, ALAMDA, QCOND).
 
     QPSOLV (``_solve``) on the problem in its own units: row i of a and b times 2**e_i, so
     that its largest |a_ij| is in [1, 2); H and g times 4**(-k), so that the largest |H_ij|
@@ -268,6 +508,23 @@ def _dqprog(h, g, a, b, neq):
         for j in range(nvar):                             # DO 15
             a_s[i, j] = math.ldexp(a[i, j], rows[i])      # SCALE(A(I,J), IRS(I))
         b_s[i] = math.ldexp(b[i], rows[i])
+    h_s, g_s, kh = _scaled_objective(h, g)
+    status, diag, sol, nact, iact, alamda, cond = _solve(h_s, g_s, a_s, b_s, neq, False)
+    if status == SOLVED and diag > 0.0:
+        # D163: the recession problem (b = 0) decides whether it is unbounded below
+        if _solve(h_s, g_s, a_s, np.zeros(ncon), neq, True)[0] == UNBOUNDED:
+            status = UNBOUNDED
+    diag = math.ldexp(diag, 2 * kh)
+    for k in range(nact):                                 # DO 50
+        alamda[k] = math.ldexp(alamda[k], 2 * kh + rows[iact[k]])
+    return status, diag, sol, nact, iact, alamda, cond
+
+
+@njit(cache=True)
+def _scaled_objective(h, g):
+    """DQPROG's H and g times 4**(-kh), the largest |H_ij| of the lower triangle (of g where
+    H = 0) in [1, 4): (H_s, g_s, kh), H_s's upper triangle zero."""
+    nvar = g.shape[0]
     big = _hmax(h)
     if big == 0.0:
         for j in range(nvar):                             # DO 35
@@ -280,22 +537,27 @@ def _dqprog(h, g, a, b, neq):
         g_s[j] = math.ldexp(g[j], -2 * kh)
         for i in range(j, nvar):                          # DO 40
             h_s[i, j] = math.ldexp(h[i, j], -2 * kh)
-    status, diag, sol, nact, iact, alamda = _solve(h_s, g_s, a_s, b_s, neq)
-    diag = math.ldexp(diag, 2 * kh)
-    for k in range(nact):                                 # DO 50
-        alamda[k] = math.ldexp(alamda[k], 2 * kh + rows[iact[k]])
-    return status, diag, sol, nact, iact, alamda
+    return h_s, g_s, kh
 
 
 @njit(cache=True)
-def _solve(h, g, a, b, neq):
+def _shift(h, g):
+    """DIAG as DQPROG finds it: the DIAG rule on the scaled H, scaled back."""
+    h_s, g_s, kh = _scaled_objective(h, g)
+    low = np.zeros(h_s.shape)
+    return math.ldexp(_cholesky_shift(h_s, low), 2 * kh)
+
+
+@njit(cache=True)
+def _solve(h, g, a, b, neq, recession):
     """QPSOLV, the Goldfarb-Idnani method on the scaled problem: (status, DIAG, SOL, NACT,
-    IACT, ALAMDA).
+    IACT, ALAMDA, QCOND).  Where DIAG > 0, UNBOUNDED where ``_unbounded`` certifies it from
+    SOL (D163); ``recession``: this is the recession problem (b = 0), solved for that alone.
 
     Indices are 0-based (constraint i is the FORTRAN's I = i+1; P = 0 is p = -1).
     ``gn[k]`` holds the column GN(.,K).  Work arrays are sized by NCON (see the module
-    docstring), the FORTRAN's by MAXV.  ``held[i]``: equality i holds and depends on the
-    active rows; not added, and not picked again until sol moves (D050).
+    docstring), the FORTRAN's by MAXV.  ``held[i]``: row i holds and depends on the
+    active rows; not added, and not picked again until sol moves (D050, D162).
     """
     nvar, ncon = g.shape[0], b.shape[0]
     low = np.zeros((nvar, nvar))
@@ -309,6 +571,10 @@ def _solve(h, g, a, b, neq):
     # how far a solved sol may miss a row, relative to its size: 1e3 eps, and 8 eps kappa
     # for the rounding of the method where H + DIAG I is ill-conditioned (D050)
     gtol = EPS * (1.0e3 + 8.0 * _kappa(h, diag, low, w, z))
+    # how far the stationarity may miss before QPRFN refines it (D160)
+    stol = gtol
+    if diag == 0.0:
+        stol = 1.0e3 * EPS
     # ---- unconstrained minimum: SOL = -(H+DIAG I)^-1 G (140)
     rhs = np.empty(max(nvar, ncon))
     for i in range(nvar):                                 # DO 140
@@ -329,13 +595,14 @@ def _solve(h, g, a, b, neq):
     m = np.empty((ncon, ncon))
     r = np.empty(ncon)
     u = np.empty(ncon)
+    c = np.empty(ncon)
     maxit = 50 * (ncon + nvar) + 100
     it = 0
     while True:
         # ---- outer loop: pick a violated constraint P (200)
         it += 1
         if it > maxit:
-            return ITERATION_LIMIT, diag, sol, nact, iact, alamda
+            return ITERATION_LIMIT, diag, sol, nact, iact, alamda, 0.0
         p = -1
         smin = 0.0
         for i in range(ncon):                             # DO 210
@@ -361,7 +628,7 @@ def _solve(h, g, a, b, neq):
             # ---- inner loop: step towards satisfying constraint P (300)
             it += 1
             if it > maxit:
-                return ITERATION_LIMIT, diag, sol, nact, iact, alamda
+                return ITERATION_LIMIT, diag, sol, nact, iact, alamda, 0.0
             # W = H^-1 N+, GN(.,K) = H^-1 N_K for the active normals
             for j in range(nvar):                         # DO 305
                 rhs[j] = sgn[p] * a[p, j]
@@ -376,7 +643,7 @@ def _solve(h, g, a, b, neq):
                         s = s + sgn[ii] * a[ii, j] * w[j]
                     rhs[i] = s
                 if _gaus(nact, m, rhs, r) != 0:
-                    return INCONSISTENT, diag, sol, nact, iact, alamda
+                    return INCONSISTENT, diag, sol, nact, iact, alamda, 0.0
             zn = 0.0
             zr = 0.0                                      # the scale of ZN's rounding
             for j in range(nvar):                         # DO 360
@@ -405,12 +672,14 @@ def _solve(h, g, a, b, neq):
             t2 = -1.0
             if zn > 1.0e3 * EPS * zr:
                 t2 = -(s / zn)
-            if t2 < 0.0 and p < neq and uplus == 0.0 and -s <= 1.0e3 * EPS * size:
-                held[p] = True                            # a dependent equality that holds
+            elif zn > 0.0 and nact > 0 and _independent(a, iact, nact, p, m, rhs, c):
+                t2 = -(s / zn)                            # D160: ZN below its rounding's scale, n+ independent
+            if t2 < 0.0 and uplus == 0.0 and -s <= gtol * size:
+                held[p] = True                            # a dependent row that holds to GTOL (D162)
                 break                                     # GO TO 200
             if t2 < 0.0 and kdrop < 0:
                 # no step can satisfy constraint P: the constraints are inconsistent
-                return INCONSISTENT, diag, sol, nact, iact, alamda
+                return INCONSISTENT, diag, sol, nact, iact, alamda, 0.0
             if t2 < 0.0:
                 t = t1                                    # dual step only, then drop
             elif kdrop < 0:
@@ -431,7 +700,24 @@ def _solve(h, g, a, b, neq):
                 u[nact] = uplus
                 nact += 1
                 active[p] = True
-                _refine(low, a, b, sgn, iact, nact, gtol, sol, u, gn, m, rhs, r, w)
+                _refine(h, g, diag, low, a, b, sgn, iact, nact, gtol, stol, sol, u, gn, m, rhs, r, w, z)
+                while diag == 0.0:
+                    # D160: an inequality's multiplier the refinement left negative: drop that
+                    # row (the method keeps u >= 0) and refine on the rest
+                    kdrop = -1
+                    t = 0.0
+                    for k in range(nact):                 # DO 387
+                        if iact[k] >= neq and u[k] < t:
+                            t = u[k]
+                            kdrop = k
+                    if kdrop < 0:
+                        break
+                    active[iact[kdrop]] = False
+                    for k in range(kdrop, nact - 1):      # DO 388
+                        iact[k] = iact[k + 1]
+                        u[k] = u[k + 1]
+                    nact -= 1
+                    _refine(h, g, diag, low, a, b, sgn, iact, nact, gtol, stol, sol, u, gn, m, rhs, r, w, z)
                 break                                     # GO TO 200
             # partial step: drop the active constraint KDROP, stay with P
             active[iact[kdrop]] = False
@@ -445,46 +731,109 @@ def _solve(h, g, a, b, neq):
         if i < neq:
             s = -abs(s)
         if s < -gtol * size:
-            return MISSES, diag, sol, nact, iact, alamda
+            return MISSES, diag, sol, nact, iact, alamda, 0.0
+    if diag > 0.0 and _unbounded(h, g, a, neq, low, sgn, iact, nact, sol, gn, m, rhs, r, w, z):   # D163
+        return UNBOUNDED, diag, sol, nact, iact, alamda, 0.0
+    if recession:
+        return SOLVED, diag, sol, nact, iact, alamda, 0.0
+    cond = _condition(h, low, a, sgn, iact, nact, gn, m, rhs, r, w, z)   # D160
     for k in range(nact):                                 # DO 910
         alamda[k] = sgn[iact[k]] * u[k]
-    return SOLVED, diag, sol, nact, iact, alamda
+    return SOLVED, diag, sol, nact, iact, alamda, cond
 
 
 def hessian_shift(h, g=None) -> float:
-    """DIAG: the multiple of I that QPROG adds to H for min g'x + x'Hx/2 (0 for a positive
-    definite H; g, default 0, sets the scale only where H = 0).
-
-    The DIAG rule of statements 5-130 on the scaled H, as ``qprog`` finds it (it is its
-    answer's ``diag`` without constraints).
+    """DIAG: the multiple of I that QPROG adds to H for min g'x + x'Hx/2 (g, default 0, sets
+    the scale only where H = 0): 0 where H is positive definite to its rounding (every
+    Cholesky pivot at least n eps max|H_ij|, D160), else the DIAG rule of statements 5-130
+    on the scaled H, as ``qprog`` finds it (its answer's ``diag``, whatever the constraints).
     """
     h = finite_matrix("h", h)
-    return qprog(h, np.zeros(len(h)) if g is None else g)["diag"]
+    h, g, _, _, _ = qp_arguments(h, np.zeros(len(h)) if g is None else g, None, None, 0, MAXV, MAXC)
+    return float(_shift(np.ascontiguousarray(h), g))
+
+
+def answer(status: int, diag: float, sol, active, multipliers, condition: float) -> dict:
+    """What QPROG returns, in both faces: QPError for a failing status (``STATUS_MESSAGES``) or
+    a non-finite result, else the result dict (``qprog``'s docstring)."""
+    if status in STATUS_MESSAGES:
+        raise QPError(STATUS_MESSAGES[status])
+    if not (np.isfinite(diag) and np.isfinite(condition) and np.all(np.isfinite(sol))
+            and np.all(np.isfinite(multipliers))):
+        raise QPError("QPROG: the solution or DIAG (the shift of H) is not finite (the arithmetic overflowed)")
+    return {"sol": sol, "diag": float(diag), "active": active, "multipliers": multipliers,
+            "regularized": bool(diag > 0.0), "condition": float(condition)}
+
+
+def relative_error(h, result: dict, unit: float = EPS) -> float:
+    """The bound on the answer's relative error on the directions H determines (D160, D161):
+    condition * (unit + DIAG / tr(H)), ``unit`` the rounding of H's data (eps, or 2**-24 for
+    the REAL*4 entry), DIAG / tr(H) the regularization's share (where tr(H) > 0).  The REAL*4
+    entry's test, operation for operation as the FORTRAN (QPROG, statements after DQPROG)."""
+    h = np.asarray(h, dtype=np.float64)
+    trace = 0.0
+    for j in range(h.shape[0]):                           # DO 35
+        trace = trace + float(h[j, j])
+    if trace > 0.0:
+        return result["condition"] * (unit + result["diag"] / trace)
+    return result["condition"] * unit
+
+
+def precision_warning(h, result: dict) -> PrecisionWarning | None:
+    """The warning ``qprog`` gives (both faces): where DIAG > 0 the answer is the regularized
+    problem's; where the relative error bound (``relative_error``) reaches 1, no digit of it
+    may be right.  None otherwise."""
+    error = relative_error(h, result)
+    if result["regularized"]:
+        return PrecisionWarning(
+            f"QPROG: H is not positive definite to its rounding (a Cholesky pivot below n eps max|H_ij|), so "
+            f"H + DIAG*I was used with DIAG = {result['diag']:.3g}: the answer minimizes g'x + x'(H + DIAG*I)x/2, "
+            "the regularized problem's, not H's (result['regularized'], register D160)",
+            condition=result["condition"], relative_error=error)
+    if error >= 1.0:
+        return PrecisionWarning(
+            f"QPROG: the answer's condition {result['condition']:.3g} passes what double precision carries: "
+            "it may have no correct digit (register D160)", condition=result["condition"], relative_error=error)
+    return None
+
+
+def solve(h, g, a=None, b=None, neq: int = 0) -> dict:
+    """``qprog`` without its warning, for a caller that reads ``regularized`` and
+    ``condition`` itself (the CSSP, whose H is singular by design: D057)."""
+    h, g, a, b, neq = qp_arguments(h, g, a, b, neq, MAXV, MAXC)
+    status, diag, sol, nact, iact, lam, cond = _dqprog(np.ascontiguousarray(h), g, np.ascontiguousarray(a), b, neq)
+    return answer(status, diag, sol, iact[:nact].copy(), lam[:nact].copy(), cond)
 
 
 def qprog(h, g, a=None, b=None, neq: int = 0) -> dict:
     """Our QPROG, ported (IMSL's calling convention, Goldfarb-Idnani; register D050).
 
     Minimizes g'x + x'Hx/2 subject to a[:neq] x = b[:neq] and a[neq:] x >= b[neq:].
-    Returns ``sol``, ``diag`` (the multiple of the identity added to H, 0 when H is
-    positive definite), ``active`` (0-based constraint indices) and ``multipliers``,
-    as ``linkrepro.legacy.rahman1996.qprog``.  Every row holds at ``sol`` to eps (1e3 +
-    8 kappa) of |a_i| |sol| + |b_i| (kappa >= cond(H + DIAG I), see the module docstring); an
-    equality that holds and depends on the others (a repeated row, 0 x = 0) is not in
-    ``active``.  Raises QPError when the constraints are inconsistent, where no solution
-    meets them to that tolerance, at the iteration limit or where the solution is not
-    finite (overflow);
-    ValueError/TypeError for bad arguments (shapes, sizes, non-finite h, g, a or b).
+    Returns, as ``linkrepro.legacy.rahman1996.qprog``:
+
+    - ``sol``; ``active`` (0-based constraint indices) and their ``multipliers``;
+    - ``diag``: 0 where H is positive definite to its rounding (every Cholesky pivot at least
+      n eps max|H_ij|): H is solved as given, a condition of 1e14 included.  Else the multiple
+      of I added to H (the DIAG rule) and ``regularized`` is True: the answer is the
+      regularized problem's, min g'x + x'(H + DIAG I)x/2, and a ``PrecisionWarning`` names
+      DIAG (D160);
+    - ``condition``: tr(H) tr(P H P), P the inverse of H + DIAG I on the directions the
+      active rows leave free, >= the condition of the answer on the directions H determines
+      (H's null directions, decided by DIAG, and the directions the active rows pin count for
+      nothing).  ``relative_error`` (condition (eps + DIAG/tr H)) bounds the answer's relative
+      error there; where it reaches 1, a ``PrecisionWarning``.
+
+    Every row holds at ``sol`` to GTOL = eps (1e3 + 8 kappa) of |a_i| |sol| + |b_i|,
+    kappa = tr(H + DIAG I) tr((H + DIAG I)^-1) >= its condition number.  A row that depends
+    on the active ones and holds to GTOL (a repeated row, 0 x = 0, an inequality repeating an
+    equality) is held, not added: not in ``active`` (D162).  QPError: the constraints are
+    inconsistent; no solution meets them to GTOL; the problem is unbounded below (where DIAG
+    > 0, certified by a direction ``_unbounded`` finds, D163); the iteration limit; a
+    non-finite answer (overflow).  ValueError/TypeError for bad arguments (shapes, sizes,
+    non-finite h, g, a or b).
     """
-    h, g, a, b, neq = qp_arguments(h, g, a, b, neq, MAXV, MAXC)
-    status, diag, sol, nact, iact, lam = _dqprog(np.ascontiguousarray(h), g, np.ascontiguousarray(a), b, neq)
-    if status == INCONSISTENT:
-        raise QPError("QPROG: the constraints are inconsistent")
-    if status == MISSES:
-        raise QPError(MISSES_MESSAGE)
-    if status == ITERATION_LIMIT:
-        raise QPError("QPROG: iteration limit reached")
-    if not (np.isfinite(diag) and np.all(np.isfinite(sol)) and np.all(np.isfinite(lam[:nact]))):
-        raise QPError("QPROG: the solution or DIAG (the shift of H) is not finite (the arithmetic overflowed)")
-    return {"sol": sol, "diag": float(diag), "active": iact[:nact].copy(),
-            "multipliers": lam[:nact].copy()}
+    result = solve(h, g, a, b, neq)
+    warning = precision_warning(h, result)
+    if warning is not None:
+        warnings.warn(warning, stacklevel=2)
+    return result

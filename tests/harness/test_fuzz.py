@@ -57,11 +57,12 @@ def test_checks_flag_results_that_break_their_promise():
     from linkrepro.port.ali1977.quirks import CORRECTED, PRINTED
     checks = fuzz.context().checks
     qp = checks["qp"]
-    missed = {"sol": np.ones(2), "diag": 0.0}
+    bound = {"diag": 0.0, "active": np.array([0]), "multipliers": np.array([0.5])}    # as QPROG returns it
+    missed = {**bound, "sol": np.ones(2)}
     assert "inequality" in qp(([np.eye(2), -np.ones(2)], {"a": [[1.0, 1.0]], "b": [3.0]}), missed)
-    assert qp(([np.eye(2), -np.ones(2)], {"a": [[1.0, 1.0]], "b": [3.0]}), {"sol": np.full(2, 1.5), "diag": 0.0}) is None
+    assert qp(([np.eye(2), -np.ones(2)], {"a": [[1.0, 1.0]], "b": [3.0]}), {**bound, "sol": np.full(2, 1.5)}) is None
     assert "equality" in qp(([np.eye(2), -np.ones(2), [[1.0, 1.0]], [3.0], 1], {}), missed)
-    near = {"sol": np.array([1.5, 1.5 - 3e-13]), "diag": 0.0}           # within 1e3 eps, not 1e-15 short
+    near = {**bound, "sol": np.array([1.5, 1.5 - 3e-13])}             # within 1e3 eps, not 1e-15 short
     assert qp(([np.eye(2), -np.ones(2)], {"a": [[1.0, 1.0]], "b": [3.0]}), near) is None
     apart = {"xp": np.array([1.0]), "yp": np.array([2.0]), "cxp": np.array([1.5]), "cyp": np.array([2.0])}
     assert "off the source's" in checks["cognate"](([], {"quirks": CORRECTED}), apart)

@@ -33,7 +33,7 @@ from linkrepro.port.ali1977.quirks import PRINTED, CORRECTED
 from linkrepro.port.rahman1996.balance import balance, solve_qp
 from linkrepro.port.rahman1996.data import CsspInputs
 from linkrepro.port.rahman1996.quirks import CSSP_PRINTED, CSSP_CORRECTED
-from linkrepro.port.rahman1996.qprog import qprog
+from linkrepro.port.rahman1996.qprog import hessian_shift, qprog
 from linkrepro.port.rahman1991.analysis import analyse
 from linkrepro.port.rahman1991.quirks import GSC_PRINTED, GSC_CORRECTED
 from linkrepro.port import libm, real4
@@ -63,6 +63,7 @@ for q in (CSSP_PRINTED, CSSP_CORRECTED):
 for q in (GSC_PRINTED, GSC_CORRECTED):
     take(analyse(crank_deg=deg, quirks=q))
 take(qprog(np.eye(2), np.array([-1.0, -1.0]), np.array([[1.0, 1.0]]), np.array([3.0]), 0))
+take(hessian_shift(np.diag([1.0, 0.0])))
 take([libm.sin(deg), libm.cos(deg), libm.arctan(deg)])
 take(real4.product(np.ones((3, 2, 4)), np.full((4, 5), 0.1), True))
 

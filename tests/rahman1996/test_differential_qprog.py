@@ -1,17 +1,20 @@
 """Differential tests: the port of our QPROG (port/qprog.py) against the legacy build's DQPROG.
 
 The property: on the same double inputs, the same outcome (both solve, or both raise the same
-error type, and for QPError the same reason), and where both solve, ``sol``, ``diag``, the
-active set and the multipliers equal bit for bit (compared as IEEE bit patterns, so -0.0 is
-not 0.0).  No tolerance is needed: the port does DQPROG's operations in DQPROG's order.
+error type, and for QPError the same reason), the same warnings, and where both solve,
+``sol``, ``diag``, the active set, the multipliers and ``condition`` equal bit for bit
+(compared as IEEE bit patterns, so -0.0 is not 0.0).  No tolerance is needed: the port does
+DQPROG's operations in DQPROG's order.
 
-Domain: n = 1..7 variables; H positive definite, positive semidefinite of any rank (zero
-included), near-singular (eigenvalues down to 1e-14 of the largest), slightly and strongly
-indefinite, not symmetric (both read only the lower triangle), diagonal, and symmetric with
-entries of 1e-6..1e8 of either sign; at scales 1e-6..1e8; g of any scale or zero; constraints:
-none, feasible with some bounds tight, redundant (repeated, scaled and summed rows), integer
-rows with exactly dependent sets, infeasible (a contradicting pair), random; m up to 3n+2 (more
-than n), neq from 0 to m (neq = n included).  And the CSSP's own balancing problem: its
+Domain: n = 1..7 variables; H positive definite (condition up to 1e3, and 1e8..1e14),
+positive semidefinite of any rank (zero included), near-singular (eigenvalues down to 1e-14
+of the largest), slightly and strongly indefinite, not symmetric (both read only the lower
+triangle), diagonal, and symmetric with entries of 1e-6..1e8 of either sign; at scales
+1e-6..1e8; g of any scale or zero; constraints: none, feasible with some bounds tight,
+redundant (repeated, scaled and summed rows), an inequality repeating (or summing)
+equalities, integer rows with exactly dependent sets, infeasible (a contradicting pair),
+random; m up to 3n+2 (more than n), neq from 0 to m (neq = n included); and unbounded
+problems (H singular, g along its null space, rows that do not stop it).  And the CSSP's own balancing problem: its
 constraint rows QP_ROWS, QP_EQUALITIES, the DATA b bounds as QPROG gets them (REAL*4), and the
 Hessians rahman1996.cssp computes over the issue's geometry domain, also with g and the bounds
 perturbed (which makes some problems infeasible).
@@ -24,6 +27,7 @@ child process, so that a regression fails instead of hanging or crashing the tes
 """
 import subprocess
 import sys
+import warnings
 
 import numpy as np
 import pytest
@@ -52,29 +56,40 @@ def bits(x) -> np.ndarray:
 
 
 def outcome(fn, *args):
-    """The result dict, or (error type, message) for the errors QPROG raises."""
-    try:
-        return fn(*args)
-    except (QPError, ValueError) as exc:
-        return type(exc).__name__, str(exc)
+    """(the result dict, or (error type, message) for the errors QPROG raises; the messages
+    of the warnings it gave)."""
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        try:
+            result = fn(*args)
+        except (QPError, ValueError) as exc:
+            result = type(exc).__name__, str(exc)
+    return result, [str(w.message) for w in caught]
+
+
+RESULT_KEYS = {"sol", "diag", "active", "multipliers", "regularized", "condition"}
 
 
 def assert_same(h, g, a=None, b=None, neq=0) -> str:
     """The property on one problem; returns the outcome's name (for hypothesis' statistics)."""
-    ours = outcome(port_qprog.qprog, h, g, a, b, neq)
-    theirs = outcome(rahman1996.qprog, h, g, a, b, neq)
+    ours, our_warnings = outcome(port_qprog.qprog, h, g, a, b, neq)
+    theirs, their_warnings = outcome(rahman1996.qprog, h, g, a, b, neq)
+    assert our_warnings == their_warnings
     if isinstance(ours, tuple) or isinstance(theirs, tuple):
         assert isinstance(ours, tuple) and isinstance(theirs, tuple), (ours, theirs)
         assert ours[0] == theirs[0], (ours, theirs)
-        if ours[0] == "QPError":                      # inconsistent, or the iteration limit
+        if ours[0] == "QPError":                      # inconsistent, unbounded, the iteration limit
             assert ours[1] == theirs[1]
         return ours[1]
-    assert set(ours) == set(theirs) == {"sol", "diag", "active", "multipliers"}
+    assert set(ours) == set(theirs) == RESULT_KEYS
     assert np.array_equal(bits(ours["sol"]), bits(theirs["sol"])), (ours["sol"], theirs["sol"])
     assert np.array_equal(bits(ours["diag"]), bits(theirs["diag"])), (ours["diag"], theirs["diag"])
     assert ours["active"].dtype == theirs["active"].dtype
     assert np.array_equal(ours["active"], theirs["active"]), (ours["active"], theirs["active"])
     assert np.array_equal(bits(ours["multipliers"]), bits(theirs["multipliers"]))
+    assert np.array_equal(bits(ours["condition"]), bits(theirs["condition"]))
+    assert ours["regularized"] == theirs["regularized"] == (ours["diag"] > 0) == bool(our_warnings and
+                                                                                       "DIAG" in our_warnings[0])
     assert port_qprog.hessian_shift(h, g) == ours["diag"]       # one DIAG rule, used by the CSSP
     return "solved, diag > 0" if ours["diag"] > 0 else "solved"
 
@@ -87,13 +102,15 @@ SCALE = st.integers(-6, 8).map(lambda e: 10.0 ** e)
 
 @st.composite
 def hessians(draw, n):
-    kind = draw(st.sampled_from(["definite", "semidefinite", "near singular", "slightly indefinite",
-                                 "indefinite", "not symmetric", "diagonal", "entries"]))
+    kind = draw(st.sampled_from(["definite", "ill-conditioned", "semidefinite", "near singular",
+                                 "slightly indefinite", "indefinite", "not symmetric", "diagonal", "entries"]))
     scale = draw(SCALE)
     m = draw(arrays(np.float64, (n, n), elements=UNIT))
     q = np.linalg.qr(m + 2.0 * np.eye(n))[0]                    # orthogonal
     if kind == "definite":
         h = m @ m.T + draw(st.floats(1e-3, 1.0)) * np.eye(n)
+    elif kind == "ill-conditioned":                 # positive definite, condition 1e8..1e14 (D160)
+        h = q @ np.diag(np.geomspace(1.0, 10.0 ** -draw(st.floats(8.0, 14.0)), n)) @ q.T
     elif kind == "semidefinite":
         rank = draw(st.integers(0, n - 1))
         h = m[:, :rank] @ m[:, :rank].T
@@ -121,7 +138,8 @@ def hessians(draw, n):
 
 @st.composite
 def constraint_sets(draw, n):
-    kind = draw(st.sampled_from(["none", "feasible", "redundant", "integer", "infeasible", "random"]))
+    kind = draw(st.sampled_from(["none", "feasible", "redundant", "repeats an equality", "integer", "infeasible",
+                                 "random"]))
     event(f"constraints {kind}")
     if kind == "none":
         return None, None, 0
@@ -141,6 +159,11 @@ def constraint_sets(draw, n):
         c = draw(st.sampled_from([1.0, 2.0, 0.5]))
         a = np.vstack([a, a[i], c * a[i], a[i] + a[j]])
         b = np.concatenate([b, [b[i], c * b[i], b[i] + b[j]]])
+    if kind == "repeats an equality":         # D162: inequalities repeating and summing equalities
+        neq = draw(st.integers(1, min(m, n)))
+        b[:neq] = a[:neq] @ x0
+        return (np.vstack([a, a[0], a[0] + a[neq - 1]]),
+                np.concatenate([b, [b[0], b[0] + b[neq - 1]]]), neq)
     if kind == "infeasible":                  # a_i x >= b_i and -a_i x >= -b_i + delta
         i = draw(st.integers(0, m - 1))
         delta = draw(st.sampled_from([1e-6, 1.0])) * max(1.0, abs(b[i]))
@@ -163,11 +186,35 @@ def problems(draw):
     return h, g, a, b, neq
 
 
+@st.composite
+def unbounded_problems(draw):
+    """Unbounded below (D163), from a seeded generator: H positive semidefinite of rank r < n
+    (0: H = 0; eigenvalues 0.1..1 on its range), g with a part -d0 along a null direction d0,
+    feasible rows that do not stop d0 (inequalities turned so that a_i d0 >= 0, equalities
+    with d0 projected out of them), the family scaled by 1e-6..1e8."""
+    rng = np.random.default_rng(draw(st.integers(0, 2 ** 32 - 1)))
+    n = int(rng.integers(1, 7))
+    r = int(rng.integers(0, n))
+    q = np.linalg.qr(rng.standard_normal((n, n)))[0]
+    h = q[:, :r] @ np.diag(rng.uniform(0.1, 1.0, r)) @ q[:, :r].T
+    d0 = q[:, r:] @ rng.uniform(0.5, 1.0, n - r)
+    g = -d0 + q[:, :r] @ rng.standard_normal(r)
+    rows = int(rng.integers(0, 2 * n + 1))
+    a = rng.standard_normal((rows, n))
+    neq = int(rng.integers(0, min(rows, n - 1) + 1))
+    a[:neq] -= np.outer(a[:neq] @ d0, d0) / (d0 @ d0)
+    a[neq:] *= np.where(a[neq:] @ d0 < 0, -1.0, 1.0)[:, None]
+    b = a @ rng.standard_normal(n) - np.r_[np.zeros(neq), rng.choice([0.0, 0.5], rows - neq)]
+    scale = draw(SCALE)
+    event("unbounded")
+    return h * scale, g * scale, (a if rows else None), (b if rows else None), neq
+
+
 # ------------------------------------------------------------------- the property, general QPs
 
 
 @settings(max_examples=150 * MORE)
-@given(problems())
+@given(st.one_of(problems(), problems(), problems(), unbounded_problems()))
 @example((np.eye(2), np.zeros(2), np.array([[1.0, 0.0], [-1.0, 0.0]]), np.array([1.0, 0.0]), 0))   # inconsistent
 @example((np.diag([4.0, 1.0, 0.0]), np.ones(3), None, None, 0))                                 # singular: diag
 @example((np.diag([1.0, 0.0]), np.array([-1.0, 0.0]), None, None, 0))                           # a zero row
@@ -273,11 +320,14 @@ def in_child(code: str, timeout: float = CHILD_SECONDS) -> str:
 def test_where_the_diag_rule_stalled_both_return_alike():
     """H = diag(-1.3, 5.3): DIAG = fl(1.3 + TINY) rounds down, so the first pivot stays below
     TINY and DIAG + (TINY - PIVOT) == DIAG: statement 100 repeated forever.  Now DIAG takes the
-    next number up, in the FORTRAN and the port; with -2.9 (rounding up) nothing changed."""
-    code = "import numpy as np; from linkrepro.legacy import rahman1996; print(rahman1996.qprog(np.diag([-1.3, 5.3]), np.ones(2))['diag'])"
+    next number up, in the FORTRAN and the port; with -2.9 (rounding up) nothing changed.
+    (Without constraints the problem is unbounded below, D163; with x1 bounded it is not.)"""
+    code = ("import numpy as np; from linkrepro.legacy import rahman1996\n"
+            "print(rahman1996.qprog(np.diag([-1.3, 5.3]), np.ones(2), [[1.0, 0.0], [-1.0, 0.0]], [-1.0, -1.0])['diag'])")
     assert float(in_child(code)) > 1.3
     for h11 in (-1.3, -2.9):
-        assert_same(np.diag([h11, 5.3]), np.ones(2))
+        assert "unbounded" in assert_same(np.diag([h11, 5.3]), np.ones(2))
+        assert_same(np.diag([h11, 5.3]), np.ones(2), [[1.0, 0.0], [-1.0, 0.0]], [-1.0, -1.0])
 
 
 def test_at_60_variables_both_report_the_inconsistency():

@@ -122,7 +122,10 @@ def test_a_subnormal_hessian_is_solved_as_its_normal_copy(qprog, tiny):
 def test_a_huge_indefinite_hessian_gets_a_finite_shift_or_a_qperror(qprog):
     """H = [[1, 1e300], [1e300, 1]] (eigenvalues 1 +- 1e300): DIAG was returned as inf.  Now
     DIAG is finite with H + DIAG*I positive definite and the answer solves (H + DIAG I) x = -g
-    (checked here, scaled by 1e-300); where the shift itself overflows, QPError."""
+    (checked here, scaled by 1e-300; g has no part along the negative direction, which the
+    regularized answer therefore does not show: not found unbounded, D163); where the shift
+    itself overflows, QPError: -max I is unbounded below without rows, and with -1 <= x <= 1
+    its shift is not finite."""
     h, g = np.array([[1.0, 1e300], [1e300, 1.0]]), np.array([1.0, 1.0])
     res = qprog(h, g)
     d = res["diag"]
@@ -130,5 +133,7 @@ def test_a_huge_indefinite_hessian_gets_a_finite_shift_or_a_qperror(qprog):
     shifted = (h + d * np.eye(2)) * 1e-300
     assert np.linalg.eigvalsh(shifted).min() > 0
     np.testing.assert_allclose(shifted @ res["sol"], -g * 1e-300, rtol=1e-10, atol=1e-310)
-    with pytest.raises(QPError, match="shift"):
-        qprog(-np.finfo(float).max * np.eye(3), np.ones(3))      # DIAG = |H_ii|(1 + sqrt(eps))
+    with pytest.raises(QPError, match="unbounded"):
+        qprog(-np.finfo(float).max * np.eye(3), np.ones(3))
+    with pytest.raises(QPError, match="shift"):                  # DIAG = |H_ii|(1 + sqrt(eps))
+        qprog(-np.finfo(float).max * np.eye(3), np.ones(3), np.vstack([np.eye(3), -np.eye(3)]), -np.ones(6))
