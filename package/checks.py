@@ -217,9 +217,14 @@ def qp_arguments(h, g, a, b, neq, max_variables: int, max_constraints: int):
 
 def slider_crank(a1, a2, a4, alpha4_deg, s1, rpm) -> dict:
     """The slider crank's inputs (in, deg, rpm) as floats (``parameters``): a1, a2 and rpm
-    positive; every TypeError before any ValueError."""
-    return parameters(dict(a1=a1, a2=a2, a4=a4, alpha4_deg=alpha4_deg, s1=s1, rpm=rpm),
-                      positive=("a1", "a2", "rpm"))
+    positive, the crank a1 and the rod a2 lengths from 1/LARGEST to LARGEST in as
+    ``link_length`` (the joint forces divide by a1: at a1 = 5e-324 in they overflowed to NaN);
+    every TypeError before any ValueError."""
+    checked = parameters(dict(a1=a1, a2=a2, a4=a4, alpha4_deg=alpha4_deg, s1=s1, rpm=rpm),
+                         positive=("a1", "a2", "rpm"))
+    for name in ("a1", "a2"):
+        link_length(name, checked[name])
+    return checked
 
 
 #: the slowest crank the CSSP engines take (rpm): 2**-126, the smallest normal REAL*4.  The

@@ -102,6 +102,18 @@ def test_the_upper_speed_bound_is_the_same_for_every_engine():
     balance(CsspInputs(rpm=1e6), CSSP_PRINTED)
 
 
+@pytest.mark.parametrize("name", ["a1", "a2"])
+def test_a_crank_or_rod_shorter_than_the_smallest_length_is_refused_by_every_engine(name):
+    """a1 = 5e-324 in gave NaN joint forces (-T / a1 overflowed) with converged rows (the
+    issue 31 fuzz); the slider crank's a1 and a2 now have the K.E.D. links' floor, 1e-6 in."""
+    with pytest.raises(ValueError, match=f"{name} = 5e-324 is out of range"):
+        GscInputs(**{name: 5e-324})
+    with pytest.raises(ValueError, match=f"{name} = 5e-324 is out of range"):
+        CsspInputs(**{name: 5e-324})
+    with pytest.raises(ValueError, match=f"{name} = 5e-324 is out of range"):
+        rahman1996.cssp(**{name: 5e-324})
+
+
 BAD_TYPE = st.sampled_from(["2", None, True, [1.0], complex(1, 0)])
 BAD_VALUE = st.sampled_from([float("nan"), float("inf"), -2.0, 2e6, HUGE])
 GOOD = {"a1": 2.0, "a2": 8.0, "a4": 1.0, "alpha4_deg": 250.0, "s1": 0.4, "rpm": 3000.0}
