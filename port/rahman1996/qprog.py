@@ -785,11 +785,18 @@ def precision_warning(h, result: dict) -> PrecisionWarning | None:
     may be right.  None otherwise."""
     error = relative_error(h, result)
     if result["regularized"]:
+        # where H (as QPROG reads it: its lower triangle) has negative curvature, neither the
+        # trace product nor the bound means anything (H = -I gave "condition -2.5e-323")
+        lower = np.tril(np.asarray(h, dtype=np.float64))
+        curvature = np.linalg.eigvalsh(lower + np.tril(lower, -1).T)
+        indefinite = curvature[0] < -len(curvature) * EPS * max(np.abs(curvature).max(), np.finfo(float).tiny)
         return PrecisionWarning(
             f"QPROG: H is not positive definite to its rounding (a Cholesky pivot below n eps max|H_ij|), so "
             f"H + DIAG*I was used with DIAG = {result['diag']:.3g}: the answer minimizes g'x + x'(H + DIAG*I)x/2, "
-            "the regularized problem's, not H's (result['regularized'], register D160)",
-            condition=result["condition"], relative_error=error)
+            "the regularized problem's, not H's (result['regularized'], register D160)"
+            + (f"; H is indefinite (an eigenvalue {curvature[0]:.3g}): the regularized answer need not be "
+               "near a minimizer of H's problem, which may be unbounded" if indefinite else ""),
+            condition=None if indefinite else result["condition"], relative_error=None if indefinite else error)
     if error >= 1.0:
         return PrecisionWarning(
             f"QPROG: the answer's condition {result['condition']:.3g} passes what double precision carries: "

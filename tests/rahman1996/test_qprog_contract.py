@@ -146,6 +146,18 @@ def test_where_diag_is_added_a_precision_warning_says_the_answer_is_the_regulari
 
 
 @ENGINES
+def test_an_indefinite_hessian_is_said_indefinite_with_no_meaningless_condition(qprog):
+    """H = -1e300 I (eigenvalue -1e300, a closed form) with x >= 0: the regularized answer
+    is returned with a warning that says H is indefinite, and no 'condition' or error bound
+    (the trace product is meaningless there; it printed as -2.5e-323)."""
+    with pytest.warns(PrecisionWarning, match=r"H is indefinite \(an eigenvalue -1e\+300\)") as caught:
+        res = qprog(-1e300 * np.eye(2), np.zeros(2), np.eye(2), np.zeros(2))
+    assert res["regularized"]
+    assert caught[0].message.condition is None and caught[0].message.relative_error is None
+    assert "condition" not in str(caught[0].message).split("register D160")[1]
+
+
+@ENGINES
 def test_condition_is_the_trace_product_on_the_free_directions(qprog):
     """``condition`` = tr(H) tr(P H P), P = H~^-1 - H~^-1 N (N'H~^-1 N)^-1 N'H~^-1 over the
     active normals N (H~ = H + DIAG I), computed here with numpy; with DIAG = 0 and no active
