@@ -27,8 +27,12 @@ packaging: $(VENV)/.installed
 bench: $(VENV)/.installed
 	$(BIN)/linkrepro bench --out out/bench
 
+# the fuzz's seeds (each 20,000 calls, about two minutes on 2 cores): `make fuzz SEEDS=7` for another
+SEEDS ?= 0 1 2
 fuzz: $(VENV)/.installed
-	$(BIN)/python -m linkrepro.harness.fuzz --calls 20000 --seed 0 --timeout 60 --out out/fuzz.json
+	for seed in $(SEEDS); do \
+	  $(BIN)/python -m linkrepro.harness.fuzz --calls 20000 --seed $$seed --timeout 60 --out out/fuzz-$$seed.json || exit 1; \
+	done
 	HYPOTHESIS_PROFILE=thorough $(BIN)/python -m pytest -q -n auto tests/ali1977/test_differential.py \
 	  tests/ali1977/test_cognate_geometry.py tests/ali1977/test_conditioning.py \
 	  tests/rahman1996/test_differential.py tests/rahman1996/test_differential_qprog.py \

@@ -10,7 +10,7 @@ accepted, violated, crash, hang).
 
 Usage::
 
-    python -m linkrepro.harness.fuzz --calls 20000 --seed 0 --timeout 60 --out out/fuzz.json
+    python -m linkrepro.harness.fuzz --calls 20000 --seed 0 --timeout 60 --out out/fuzz-0.json
     python -m linkrepro.harness.fuzz --replay "ali1977.loc(1, 1, nan, 1, 0)"
 
 The same seed gives the same calls.  The exit status is 1 when there are findings.  A
