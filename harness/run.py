@@ -129,8 +129,10 @@ def _group_process(index: int, names: list[str], out_dir: Path, options: RunOpti
 @contextmanager
 def _interrupt_deferred():
     """A Ctrl-C inside the block is raised (as KeyboardInterrupt) when the block ends (in the
-    main thread, which alone receives signals; elsewhere nothing)."""
-    if threading.current_thread() is not threading.main_thread():
+    main thread, which alone receives signals; elsewhere nothing).  Where Ctrl-C is ignored (a
+    run started with SIGINT ignored, as a shell's background job is), it stays ignored."""
+    if threading.current_thread() is not threading.main_thread() \
+            or signal.getsignal(signal.SIGINT) is signal.SIG_IGN:
         yield
         return
     caught = []

@@ -108,6 +108,9 @@ def _trial(trial: dict, base: str) -> dict:
 def main(plan_path: str) -> int:
     with open(plan_path) as handle:
         plan = json.load(handle)
+    # Ctrl-C as at a terminal, even where this process was started with SIGINT ignored (by a
+    # shell's background job: the trials' SIGINT then did nothing and the run exited 0)
+    signal.signal(signal.SIGINT, signal.default_int_handler)
     os.environ["LINKREPRO_IN_POOL"] = "1"          # in this process, in turn: the events in one order
     from linkrepro.harness import cli
     null = os.open(os.devnull, os.O_WRONLY)

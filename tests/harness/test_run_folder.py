@@ -285,3 +285,26 @@ def test_a_scene_is_put_in_place_whole_with_or_without_an_exchange(tmp_path, mon
         run_folder.place(new, out / "scene")
         assert [p.name for p in (out / "scene").iterdir()] == ["a.csv"] and (out / "scene" / "a.csv").read_text() == f"x\n{k}\n"
         assert list((tmp_path / "partial").iterdir()) == []
+
+
+@pytest.mark.parametrize("ignored", [False, True])
+def test_a_ctrl_c_inside_a_deferred_block_is_raised_after_it_unless_ctrl_c_is_ignored(ignored):
+    """Ctrl-C during a folder write is raised when the write is done; a run started with SIGINT
+    ignored (a shell's background job) is not made interruptible by it."""
+    import signal as signals
+
+    from linkrepro.harness.run import _interrupt_deferred
+    previous = signals.signal(signals.SIGINT, signals.SIG_IGN if ignored else signals.default_int_handler)
+    try:
+        finished = []
+        try:
+            with _interrupt_deferred():
+                os.kill(os.getpid(), signals.SIGINT)
+                finished.append(True)              # the block runs to its end
+            raised = False
+        except KeyboardInterrupt:
+            raised = True
+        assert finished == [True] and raised is not ignored
+        assert signals.getsignal(signals.SIGINT) is (signals.SIG_IGN if ignored else signals.default_int_handler)
+    finally:
+        signals.signal(signals.SIGINT, previous)
