@@ -128,16 +128,17 @@ def analyse(inputs: GscInputs = GscInputs(), crank_deg=CRANK_DEG, quirks: GscQui
     if not isinstance(quirks, GscQuirks):
         raise TypeError(f"quirks must be GscQuirks (GSC_PRINTED, GSC_CORRECTED, ...), got {type(quirks).__name__}")
     position.branch_asked(branch)
-    th = np.radians(angles_deg("crank_deg", crank_deg))
+    deg = angles_deg("crank_deg", crank_deg)       # as asked: radians(48) * 180 / pi is 48.00000000000001
+    th = np.radians(deg)
     if quirks.five_variable_loop:
         q, status, closure, forces, iterations, sign = _five_variable(inputs, th, quirks, branch, positions)
     else:
         q, status, closure, forces, iterations, sign = _closed_loop(inputs, th, branch)
     if strict:
-        _raise_first(status, np.degrees(th), closure, sign)
+        _raise_first(status, deg, closure, sign)
     n = th.size                      # built in one go (a column set at a time costs more than the analysis)
     return pd.DataFrame({"a4": np.full(n, inputs.a4), "alpha4_deg": np.full(n, inputs.alpha4_deg),
-                         "s1": np.full(n, inputs.s1), "crank_deg": np.degrees(th),
+                         "s1": np.full(n, inputs.s1), "crank_deg": deg,
                          "converged": np.isin(status, CONVERGED), "s4": q[:, 4],
                          "theta2": wrapped_deg(q[:, 0], False), "eta2": wrapped_deg(q[:, 1], True),
                          "theta3": wrapped_deg(q[:, 2], False), "eta3": wrapped_deg(q[:, 3], True),

@@ -189,6 +189,17 @@ def test_angles_are_wrapped():
     assert gsc.wrapped_deg(np.array([np.pi, -np.pi, 3 * np.pi, 1e-300]), True).tolist() == [-180.0, -180.0, -180.0, np.degrees(1e-300)]
 
 
+def test_the_crank_angles_are_given_back_as_asked():
+    """crank_deg holds the angles the caller asked for, not their round trip through radians
+    (48 deg came back as 48.00000000000001), in both models and in the strict error."""
+    asked = np.arange(0.0, 361.0)
+    for quirks in (GSC_PRINTED, GSC_CORRECTED):
+        assert gsc.analyse(EXAMPLE, asked, quirks).crank_deg.tolist() == asked.tolist()
+    with pytest.raises(ConvergenceError) as caught:
+        gsc.analyse(GscInputs(a4=30.0, alpha4_deg=310.0, s1=9.0), [48.0], strict=True)
+    assert caught.value.angle_deg == 48.0
+
+
 def test_branch_argument_is_checked():
     for bad, error in ((0, ValueError), (2, ValueError), (1.0, TypeError), (True, TypeError), ("1", TypeError)):
         with pytest.raises(error):
