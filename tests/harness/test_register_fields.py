@@ -117,9 +117,6 @@ def test_every_view_of_an_entry_shows_its_basis_and_tolerance(tmp_path):
     assert "basis: inferred: from the published table's fit" in text and "settles: the lost page found" in text
 
 
-@pytest.mark.skipif(any(e.basis is None for e in register_mod.load().values()),
-                    reason="skipped while an entry of harness/deviations.toml lacks its basis: the entries get "
-                           "theirs on another branch; remove this skip when it is merged")
 def test_every_entry_of_the_register_says_how_it_knows():
     entries = register_mod.load().values()
     assert all(e.basis in BASES for e in entries)
