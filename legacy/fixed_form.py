@@ -3,8 +3,8 @@ compiler's reading of a constant assigned to a REAL*8 variable (register D180).
 
 Columns 1-6 hold the label and the continuation mark, 7-72 the code; a C, c, * or ! in
 column 1 makes a comment card.  ``context_constants`` writes every real literal assigned
-directly to a REAL*8 variable as a double constant (``K1XCG=0.2041241`` becomes
-``K1XCG=0.2041241D0``): what the g77 manual calls context-sensitive constants, which 'many
+directly to a variable its program unit declares REAL*8 as a double constant
+(``K1XCG=0.2041241`` becomes ``K1XCG=0.2041241D0``): what the g77 manual calls context-sensitive constants, which 'many
 other Fortran compilers' did, and what DEC's and Intel's ``/fpconstant`` still do.
 
 The standard library only: meson runs this file as a script when it builds the printed CSSP
@@ -18,11 +18,15 @@ from __future__ import annotations
 import re
 import sys
 
-__all__ = ["is_comment", "split", "join", "statements", "as_double", "real8_names", "context_constants"]
+__all__ = ["is_comment", "split", "join", "statements", "units", "as_double", "real8_names", "context_constants"]
 
 _DECL = re.compile(r"^\s*(?:REAL\s*\*\s*8|DOUBLE\s+PRECISION)\s+(.*)$", re.IGNORECASE)
-_ASSIGN_LITERAL = re.compile(r"^(\s*)([A-Za-z]\w*)(\s*(?:\([^=]*\))?\s*=\s*[+-]?\s*)"
-                             r"(\d+\.\d*|\.\d+)([Ee][+-]?\d+)?(\s*)$")
+_IMPLICIT = re.compile(r"^\s*IMPLICIT\b", re.IGNORECASE)
+_END = re.compile(r"^\s*END\s*$", re.IGNORECASE)
+#: an assignment of a lone real literal, after a logical IF or not: (lead, name, subscript and '=', mantissa,
+#: exponent, trailing blanks)
+_ASSIGN_LITERAL = re.compile(r"^(\s*(?:IF\s*\(.*\)\s*)?)([A-Za-z]\w*)(\s*(?:\([^=]*\))?\s*=\s*[+-]?\s*)"
+                             r"(\d+\.\d*|\.\d+|\d+(?=[Ee]))([Ee][+-]?\d+)?(\s*)$", re.IGNORECASE)
 
 
 def is_comment(line: str) -> bool:
@@ -80,12 +84,29 @@ def as_double(text: str, mantissa: str, exponent: str | None) -> str:
     return mantissa + "D" + exponent[1:] if exponent[0] in "Ee" else text
 
 
-def real8_names(text: str) -> set[str]:
-    """The names a program unit's text declares REAL*8 or DOUBLE PRECISION (upper case)."""
-    lines = text.split("\n")
-    names: set[str] = set()
+def _code(lines: list[str], stmt: list[int]) -> str:
+    """A statement's code, its continuation lines joined."""
+    return " ".join(split(lines[k])[1] for k in stmt)
+
+
+def units(lines: list[str]) -> list[list[list[int]]]:
+    """The statements (``statements``) of each program unit: a unit ends with its END statement."""
+    out: list[list[list[int]]] = [[]]
     for stmt in statements(lines):
-        whole = " ".join(split(lines[k])[1] for k in stmt)
+        out[-1].append(stmt)
+        if _END.match(_code(lines, stmt)):
+            out.append([])
+    return [unit for unit in out if unit]
+
+
+def real8_names(lines: list[str], unit: list[list[int]]) -> set[str]:
+    """The names one program unit declares REAL*8 or DOUBLE PRECISION (upper case);
+    ValueError at an IMPLICIT statement other than IMPLICIT NONE (its typing is not read here)."""
+    names: set[str] = set()
+    for stmt in unit:
+        whole = _code(lines, stmt)
+        if _IMPLICIT.match(whole) and not re.match(r"^\s*IMPLICIT\s+NONE\s*$", whole, re.IGNORECASE):
+            raise ValueError(f"an IMPLICIT statement types names by their letter, which is not read here: {whole.strip()!r}")
         match = _DECL.match(whole)
         if match:
             flat = match.group(1)
@@ -96,23 +117,27 @@ def real8_names(text: str) -> set[str]:
 
 
 def context_constants(text: str) -> tuple[str, int]:
-    """(``text`` with every literal assigned directly to a REAL*8 variable written as double,
-    how many assignments were rewritten).  Only one-line assignments of a lone literal
-    (``X=0.5``, ``A(I)=-1.0``) are read so; a literal in an expression keeps its type."""
+    """(``text`` with every literal assigned directly to a REAL*8 variable of its program unit
+    written as double, how many assignments were rewritten).  Only assignments of a lone literal
+    (``X=0.5``, ``A(I)=-1.0``) are read so, a literal in an expression keeps its type; ValueError
+    where such an assignment runs over continuation lines (not rewritten here)."""
     lines = text.split("\n")
-    real8 = real8_names(text)
     changed = 0
-    for k, line in enumerate(lines):
-        if is_comment(line) or (len(line) > 5 and line[5] not in " 0"):
-            continue
-        head, code, rest = split(line)
-        match = _ASSIGN_LITERAL.match(code)
-        if match and match.group(2).upper() in real8:
-            literal = match.group(4) + (match.group(5) or "")
-            new = (match.group(1) + match.group(2) + match.group(3)
-                   + as_double(literal, match.group(4), match.group(5)) + match.group(6))
-            lines[k] = join(head, new, rest, line)
-            changed += 1
+    for unit in units(lines):
+        real8 = real8_names(lines, unit)
+        for stmt in unit:
+            k = stmt[0]
+            head, code, rest = split(lines[k])
+            match = _ASSIGN_LITERAL.match(_code(lines, stmt))
+            if match and match.group(2).upper() in real8 and len(stmt) > 1:
+                raise ValueError(f"a literal assigned to a REAL*8 variable over continuation lines is not read here: "
+                                 f"{_code(lines, stmt).strip()!r}")
+            if match and match.group(2).upper() in real8:
+                literal = match.group(4) + (match.group(5) or "")
+                new = (match.group(1) + match.group(2) + match.group(3)
+                       + as_double(literal, match.group(4), match.group(5)) + match.group(6))
+                lines[k] = join(head, new, rest, lines[k])
+                changed += 1
     return "\n".join(lines), changed
 
 
