@@ -203,3 +203,35 @@ def test_the_record_is_a_fresh_measurement():
     fresh = A.record_frame(A.cell_frame(B.measure()))
     record = pd.read_csv(A.RECORD, dtype=str, keep_default_na=False)
     pd.testing.assert_frame_equal(fresh.astype(str).reset_index(drop=True), record)
+
+
+def test_a_cell_a_consistent_arithmetic_reaches_is_explained_by_that_run(monkeypatch, register):
+    """D181 on a made-up record: where the adopted arithmetic misses a cell and an arithmetic that
+    lowers no table reaches it, the cell is explained (by that run), not within tolerance; one
+    reached only by an arithmetic that lowers tables stays within D056's tolerance, and its trail
+    says why the run does not count."""
+    from linkrepro.harness.diff import classify_cells, diff_scene
+    from linkrepro.harness.published_tables import PublishedTable
+    from linkrepro.harness.scenes import get
+    record = dict(A._record())
+    misses = [cell for cell, by in record.items() if cell[0] == "5.4" and "reference" not in by
+              and cell[2] == "after" and cell[1] not in ("90", "170", "360")]     # not D058's, not row 360's
+    consistent, coincidence = misses[0], misses[1]
+    for cell, by in record.items():          # x87 reaches what the reference reaches, and one cell more
+        record[cell] = tuple(n for n in by if n != "x87") + (("x87",) if "reference" in by or cell == consistent else ())
+    record[coincidence] = ("real8",)
+    monkeypatch.setattr(A, "_record", lambda: record)
+    A._lowered.cache_clear()
+    try:
+        assert "x87" in A.consistent() and "real8" not in A.consistent()
+        scene = get("rahman1996-table5_4")
+        diff = diff_scene(scene, PublishedTable.load(scene.table), {"legacy": scene.run("legacy")}, register)
+        classes = classify_cells(diff, register).join(diff)
+        at = lambda cell: classes[(classes["crank_deg"] == int(cell[1])) & (classes["column"] == cell[2])].iloc[0]
+        assert (at(consistent)["count"], at(consistent)["kind"], at(consistent)["register_ids"]) == \
+            ("explained", "portability", "D181")
+        assert (at(coincidence)["count"], at(coincidence)["register_ids"]) == ("within-tolerance", "D056")
+        assert "explained by that run (D181)" in A.trail_note(*consistent)[0]
+        assert "Not an explanation: real8 (lowers Tables" in A.trail_note(*coincidence)[0]
+    finally:
+        A._lowered.cache_clear()

@@ -242,16 +242,18 @@ def trail_note(table: str, row: str, column: str) -> tuple[str, ...]:
         return (text + f"all {len(names)} of its arithmetics reach the printed digit.",)
     if not by:
         return (text + f"none of its {len(names)} arithmetics reaches the printed digit.",)
-    text += (f"{len(by)} of its {len(names)} arithmetics {'reaches' if len(by) == 1 else 'reach'} the printed "
-             f"digit: {', '.join(by)}; not {', '.join(n for n in names if n not in by)}.")
-    if names[0] not in by:
-        runs = explaining(table, row, column)
-        other = [_why_not(n) for n in by if n not in runs]
-        if runs:
-            text += (f" {', '.join(runs)} {'lowers' if len(runs) == 1 else 'lower'} no table against the adopted "
-                     "arithmetic: the cell is explained by that run (D181).")
-        if other:
-            text += f" Not an explanation: {'; '.join(other)}."
+    reach = f"{len(by)} of its {len(names)} arithmetics {'reaches' if len(by) == 1 else 'reach'} the printed digit"
+    if names[0] in by:
+        return (text + f"{reach}, the adopted one ({names[0]}) among them; not "
+                f"{', '.join(n for n in names if n not in by)}.",)
+    text += f"{reach}, not the adopted one ({names[0]}): {', '.join(by)}."
+    runs = explaining(table, row, column)
+    other = [_why_not(n) for n in by if n not in runs]
+    if runs:
+        text += (f" {', '.join(runs)} {'lowers' if len(runs) == 1 else 'lower'} no table against the adopted "
+                 "arithmetic: the cell is explained by that run (D181).")
+    if other:
+        text += f" Not an explanation: {'; '.join(other)}."
     return (text,)
 
 
@@ -287,6 +289,12 @@ def _rows_list(part: pd.DataFrame) -> str:
     return "; ".join(out)
 
 
+def _verdict(name: str, ref: str, verdict: dict[str, bool]) -> str:
+    """The 'adopt?' column: the reference is the adopted arithmetic (D180), the others meet the
+    criterion against it or not."""
+    return "adopted (D180)" if name == ref else "yes" if verdict[name] else "no"
+
+
 def as_markdown(m: Measurement, counts: pd.DataFrame, cells: pd.DataFrame) -> str:
     ref = m.ran[0].name
     verdict = meets_criterion(counts)
@@ -319,7 +327,7 @@ def as_markdown(m: Measurement, counts: pd.DataFrame, cells: pd.DataFrame) -> st
                      f" | {part.at['all', 'within_1e-6']} | {part.at['all', 'cells_changed']}"
                      f" | {part.at['all', 'max_rel_change']:.1e} | {(part.loc[head, 'digits_changed'] > 0).sum()} / "
                      f"{(part.loc[head, 'gain'] > 0).sum()} / {(part.loc[head, 'gain'] < 0).sum()} | {by_column[v.name].get('before', 0)} / "
-                     f"{by_column[v.name].get('after', 0)} | {'yes' if verdict[v.name] else 'no'} |")
+                     f"{by_column[v.name].get('after', 0)} | {_verdict(v.name, ref, verdict)} |")
     lines += ["", "**Criterion** (never cell by cell): an arithmetic is adopted if it is documented for machines "
               "of the time, raises the count of every table where it can act (where it changes a printed digit: "
               "'acted on') and lowers none. Against the reference: "
