@@ -151,3 +151,14 @@ def test_the_build_script_writes_each_file(tmp_path):
     assert F.main([str(tmp_path / "a.f"), str(tmp_path / "b.f")]) == 0
     assert (tmp_path / "b.f").read_text() == "      REAL*8 X\n      X=0.5D0\n      END\n"
     assert F.main([str(tmp_path / "a.f")]) == 2
+
+
+def test_the_printed_engine_is_built_from_the_listing_read_so():
+    """The printed CSSP program (meson.build compiles a copy of legacy/printed/ read by
+    context_constants) writes the crank's I_xx = M1*K1XCG**2 with M1 = 1.9/G in REAL*4 and
+    K1XCG = 0.2041241 in double, as the legacy build does."""
+    from linkrepro.harness.scenes import get
+    scene = get("rahman1996-table5_1")
+    printed, legacy = scene.run("printed"), scene.run("legacy")
+    m1 = float(np.float32(1.9) / np.float32(386.4))
+    assert printed.at[0, "before"] == legacy.at[0, "before"] == m1 * (0.2041241 * 0.2041241)
