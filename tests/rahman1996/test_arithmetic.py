@@ -232,6 +232,9 @@ def test_a_cell_a_consistent_arithmetic_reaches_is_explained_by_that_run(monkeyp
             ("explained", "portability", "D181")
         assert (at(coincidence)["count"], at(coincidence)["register_ids"]) == ("within-tolerance", "D056")
         assert "explained by that run (D181)" in A.trail_note(*consistent)[0]
+        from linkrepro.harness.trail import as_text, cell_trail
+        shown = " ".join(as_text(cell_trail(scene, consistent[1], consistent[2], diff, register)).split())
+        assert " ".join(A.trail_note(*consistent)[0].split()) in shown and "legacy" in shown
         assert "Not an explanation: real8 (lowers Tables" in A.trail_note(*coincidence)[0]
     finally:
         A._lowered.cache_clear()
