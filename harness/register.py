@@ -21,7 +21,11 @@ from functools import lru_cache
 from pathlib import Path
 
 REGISTER_PATH = Path(__file__).resolve().parent / "deviations.toml"
-KINDS = ("ocr", "original-bug", "portability", "published-misprint", "published-rounding", "unresolved")
+KINDS = ("ocr", "original-bug", "portability", "published-misprint", "published-rounding", "unresolved",
+         "model-assumption")
+#: a modelling choice of a thesis that the corrected engines keep (not a bug): it claims no cell
+#: and switches no quirk; its ``scenes`` are those whose corrected results still assume it
+MODEL_ASSUMPTION = "model-assumption"
 REQUIRED = ("id", "kind", "title", "where", "printed", "meant", "evidence", "effect")
 #: the text fields of an entry a reader reads (and the register's tests search)
 TEXT_FIELDS = ("title", "where", "printed", "meant", "evidence", "effect")
@@ -79,6 +83,7 @@ class Deviation:
     moves: dict = field(default_factory=dict)     # scene -> columns the quirk moves
     readings: tuple = ()                          # {file, chosen, scan}: the scan's text put back
     checks: tuple = ()                            # Check items: quoted figures and how to re-measure them
+    scenes: tuple = ()                            # a model assumption's scenes (their corrected results assume it)
 
     @property
     def text(self) -> str:
@@ -125,6 +130,10 @@ def load(path: Path = REGISTER_PATH) -> dict[str, Deviation]:
             raise ValueError(f"register entry {raw['id']}: kind {raw['kind']!r} not in {KINDS}")
         if raw["id"] in entries:
             raise ValueError(f"register id {raw['id']} appears twice")
+        if (raw["kind"] == MODEL_ASSUMPTION) != bool(raw.get("scenes")) or (
+                raw["kind"] == MODEL_ASSUMPTION and any(raw.get(k) for k in ("cells", "quirk", "moves"))):
+            raise ValueError(f"register entry {raw['id']}: `scenes` (the scenes whose corrected results assume it) "
+                             f"for a {MODEL_ASSUMPTION} and only for one, which claims no cells and has no quirk")
         cells = tuple(CellClaim(c["scene"], tuple(c.get("rows", ["*"])), tuple(c.get("columns", ["*"])),
                                 tuple(c["engines"])) for c in raw.get("cells", []))
         entries[raw["id"]] = Deviation(
@@ -132,7 +141,7 @@ def load(path: Path = REGISTER_PATH) -> dict[str, Deviation]:
             printed=raw["printed"], meant=raw["meant"], evidence=raw["evidence"],
             effect=raw["effect"], quirk=raw.get("quirk"), certainty=raw.get("certainty"),
             cells=cells, moves=dict(raw.get("moves", {})), readings=tuple(raw.get("reading", [])),
-            checks=tuple(_check(raw["id"], c) for c in raw.get("check", [])))
+            checks=tuple(_check(raw["id"], c) for c in raw.get("check", [])), scenes=tuple(raw.get("scenes", ())))
     return entries
 
 

@@ -221,6 +221,25 @@ COUNTS_WORDS = ("A cell is *matched* when it is within half a unit of the printe
                 "status `registered` covers both explained and unresolved cells.")
 
 
+ASSUMPTIONS_WORDS = ("'Corrected' means the listings' bugs removed within the thesis's model: the corrected engine "
+                     "keeps the thesis's modelling choices below (register kind `model-assumption`, not bugs), each "
+                     "with the effect an alternative was measured to have.")
+
+
+def assumptions(scene: str, register: dict[str, Deviation]) -> list[Deviation]:
+    """The register's model assumptions whose ``scenes`` name ``scene`` (its corrected results keep them), by id."""
+    return [entry for _, entry in sorted(register.items()) if scene in entry.scenes]
+
+
+def assumptions_markdown(scene: str, register: dict[str, Deviation]) -> list[str]:
+    """The section on what the corrected engine of ``scene`` still assumes (no lines where nothing)."""
+    found = assumptions(scene, register)
+    if not found:
+        return []
+    return (["## What the corrected engine still assumes", "", ASSUMPTIONS_WORDS, ""]
+            + [f"- **{entry.id}** {entry.title}. {entry.effect}" for entry in found] + [""])
+
+
 def render_entry(entry: Deviation) -> str:
     lines = [f"#### {entry.id} ({entry.kind}{', ' + entry.certainty if entry.certainty else ''}): {entry.title}",
              f"- where: {entry.where}", f"- printed: `{entry.printed}`", f"- meant: `{entry.meant}`",
@@ -241,6 +260,7 @@ def scene_report(scene, diff: pd.DataFrame, timings: dict[str, float], register:
     out += ["", "## Cells against the published table",
             "", COUNTS_WORDS + " Kinds that explain no cell of this table are left out.", "",
             markdown_table(counts_table(counts), "{}"), "",
+            *assumptions_markdown(scene.name, register),
             "## Largest |engine - published| per column (over produced cells)", "",
             markdown_table(column_max(diff, "abs_diff")), "",
             "## Largest |engine - legacy| per column", "",
