@@ -147,8 +147,9 @@ def _under(exc: OSError, folder: Path) -> bool:
 
 def _summary(done: list, out_dir: Path) -> None:
     """Each table's cells per engine of this run (``diff.count_cells``), then the last line: the
-    report and the cells of every table and engine it shows (matched, explained, unresolved,
-    unexplained, not produced), this run's scenes and those run into the folder before."""
+    report and the cells of every table and engine it shows (``diff.headline``: matched, explained,
+    within tolerance, unresolved, unexplained, not produced), this run's scenes and those run into
+    the folder before."""
     from .diff import headline
     for item in done:
         if item.skipped:

@@ -1,18 +1,29 @@
 """Cell-by-cell comparison of every engine with the published table and with legacy.
 
-A cell's status, per engine:
+A cell's status, per engine (diff.csv's ``status``):
 ``match``         within half a unit of the printed last digit;
-``registered``    outside it, and a register entry explains it (ids given);
-``unexplained``   outside it, and nothing in the register explains it;
+``registered``    outside it, and register entries name it (ids given);
+``unexplained``   outside it, and nothing in the register names it;
 ``not-produced``  the engine does not give this cell (the printed listings only
                   WRITE some quantities).
-For ``port_corrected`` a cell is also registered to each quirk whose switching
-alone (from PRINTED) moves that cell beyond its half unit: measured, per cell.
+The entries a cell names: those whose ``cells`` claim it; for ``port_corrected`` also each
+quirk whose switching alone (from PRINTED) moves that cell beyond its half unit (measured, per
+cell); and a scene's ``floor_id`` where the cell is within the scene's ``rel_floor`` relative of
+the printed value (the entry must state that tolerance: its ``tolerance`` field).
 
-A ``registered`` cell is not always explained: an entry of kind ``unresolved`` records that
-we do not know.  ``count_cells`` is the one count every report shows (each scene's report.md,
-the run's report.md, report.html's overview, the last line of ``linkrepro reproduce``): per
-engine, matched / explained (by kind) / unresolved / unexplained / not-produced.
+What a cell counts as (``classify_cells``; ``count_cells`` is the one count every report shows:
+each scene's report.md, the run's report.md, report.html's overview and cell colours, the
+lines of ``linkrepro reproduce``, README's generated tables, ``linkrepro explain``): per engine,
+matched / explained (by kind) / within tolerance / unresolved / unexplained / not-produced.
+Of a ``registered`` cell's entries, an entry that states a ``tolerance`` explains it only by
+closeness, an ``unresolved`` one says we do not know, any other explains it by a cause:
+
+- a cause that accounts for the cell's whole difference (its claim says ``whole = true``)
+  -> explained, whatever else names the cell;
+- an ``unresolved`` entry -> unresolved: it wins over causes that do not account for the
+  whole difference, and over any tolerance (closeness does not remove a known cause);
+- else a cause -> explained (counted under its kind, once);
+- else a tolerance only -> within tolerance: counted apart, not explained.
 """
 from __future__ import annotations
 
@@ -55,6 +66,19 @@ def quirk_effects(scene: TableScene, published: PublishedTable, base: pd.DataFra
     return effects
 
 
+def check_floor(scene: TableScene, register: dict[str, Deviation]) -> None:
+    """A scene's ``floor_id`` must name an entry stating the scene's ``rel_floor`` as its
+    ``tolerance`` (ValueError otherwise): the cells within it are explained by closeness only."""
+    if not scene.floor_id:
+        return
+    entry = register.get(scene.floor_id)
+    stated = entry.tolerance if entry is not None else None
+    if stated != scene.rel_floor:
+        raise ValueError(f"scene {scene.name}: floor_id {scene.floor_id} states "
+                         f"{'no entry' if entry is None else f'tolerance {stated!r}'}, not the scene's "
+                         f"rel_floor {scene.rel_floor!r} (give the entry `tolerance = {scene.rel_floor!r}`)")
+
+
 def diff_scene(scene: TableScene, published: PublishedTable, results: dict[str, pd.DataFrame],
                register: dict[str, Deviation]) -> pd.DataFrame:
     """Long table: one row per (engine, published cell)."""
@@ -64,6 +88,7 @@ def diff_scene(scene: TableScene, published: PublishedTable, results: dict[str, 
     if "port_corrected" in results:
         base = results.get("port_printed")
         effects = quirk_effects(scene, published, base if base is not None else scene.port(scene.quirks[0]))
+    check_floor(scene, register)
     quirk_ids = {name: entry.id for name, entry in by_quirk(register).items()}
     claiming = [e for e in register.values() if any(c.scene == scene.name for c in e.cells)]
     index = pub_val.index                   # every frame read at the published rows' labels
@@ -111,56 +136,77 @@ def diff_scene(scene: TableScene, published: PublishedTable, results: dict[str, 
     return pd.DataFrame(rows)
 
 
-#: what a cell counts as (``classify_cells``, ``count_cells``)
-CLASSES = ("matched", "explained", "unresolved", "unexplained", "not-produced")
+#: what a cell counts as (``classify_cells``, ``count_cells``); in words with a space for the hyphen
+CLASSES = ("matched", "explained", "within-tolerance", "unresolved", "unexplained", "not-produced")
 #: the kinds an explained cell is counted under: every kind but ``unresolved`` and
 #: ``model-assumption`` (which claims no cell), and SEVERAL
 SEVERAL = "several kinds"
 EXPLAINED_BY = tuple(k for k in KINDS if k not in ("unresolved", "model-assumption")) + (SEVERAL,)
 #: the columns of ``count_cells``: the total, then the classes with ``explained`` split by kind
-COUNT_COLUMNS = ("cells", "matched", "explained", *EXPLAINED_BY, "unresolved", "unexplained", "not-produced")
+COUNT_COLUMNS = ("cells", "matched", "explained", *EXPLAINED_BY, *CLASSES[2:])
+
+
+def words(column: str) -> str:
+    """A class or count column as a sentence says it ('within-tolerance' -> 'within tolerance')."""
+    return column.replace("-", " ")
+
+
+def _key_column(diff: pd.DataFrame) -> str:
+    """The diff's row key (``diff_scene`` puts it right after ``engine``)."""
+    return diff.columns[list(diff.columns).index("engine") + 1]
 
 
 def classify_cells(diff: pd.DataFrame, register: dict[str, Deviation]) -> pd.DataFrame:
     """What each row of a diff (``diff_scene``, or a diff.csv read back) counts as: a frame on
     the diff's index with ``count`` (one of CLASSES) and ``kind`` (for an explained cell, the
-    kind of the entries that explain it, or SEVERAL; else "").
-
-    - ``match`` -> matched; ``not-produced`` -> not-produced (whatever ids it carries);
-      ``unexplained`` -> unexplained.
-    - ``registered``: the kinds of the register entries its ids name (ids that name no entry
-      of ``register`` are ignored: they explain nothing).  Entries of any kind but
-      ``unresolved`` -> explained, under that kind, or under SEVERAL when they are of more than
-      one kind (counted once, never under each; which kinds is in the cell's register ids).
-      A cell named by an ``unresolved`` entry AND a real explanation is explained: the
-      unresolved entry is ignored.  Only ``unresolved`` entries -> unresolved: we do not know.
-      No entry at all (every id missing from the register) -> unexplained.
-    An unresolved cell is never counted as explained or matched."""
+    kind of the entries that explain it, or SEVERAL; else "").  The rules: the module's
+    docstring.  ``match`` -> matched; ``not-produced`` -> not-produced (whatever ids it
+    carries); ``unexplained`` -> unexplained; ``registered`` by its entries (ids that name no
+    entry of ``register`` are ignored: they explain nothing; none left -> unexplained).  A
+    cell explained by causes of several kinds counts once, under SEVERAL (which kinds: its
+    register ids).  A ``whole`` claim is looked up by the diff's ``scene``, ``engine``,
+    ``column`` and row key."""
     if diff.empty:                            # no engine ran: no rows, and maybe no columns
         return pd.DataFrame({"count": pd.Series(dtype=str), "kind": pd.Series(dtype=str)}, index=diff.index)
     ids = diff["register_ids"].fillna("").astype(str) if "register_ids" in diff else pd.Series("", index=diff.index)
+    wholes = any(claim.whole for entry in register.values() for claim in entry.cells)
+    if wholes and not {"scene", "engine", "column"} <= set(diff.columns):
+        raise ValueError("the register's 'whole' claims need the diff's scene, engine, row key and column; "
+                         f"this diff has {list(diff.columns)}")
+    cells = (zip(diff["scene"], diff[_key_column(diff)], diff["column"], diff["engine"]) if wholes
+             else [None] * len(diff))
     count, kind = [], []
-    for status, names in zip(diff["status"], ids):
+    for status, names, cell in zip(diff["status"], ids, cells):
         if status == "match":
             count.append("matched"), kind.append("")
         elif status in ("not-produced", "unexplained"):
             count.append(status), kind.append("")
         elif status == "registered":
-            kinds = {register[i].kind for i in names.split() if i in register}
-            real = sorted(kinds - {"unresolved"})
-            if real:
-                count.append("explained"), kind.append(real[0] if len(real) == 1 else SEVERAL)
-            else:
-                count.append("unresolved" if kinds else "unexplained"), kind.append("")
+            counted = _registered([register[i] for i in names.split() if i in register], cell)
+            count.append(counted[0]), kind.append(counted[1])
         else:
             raise ValueError(f"unknown cell status {status!r}")
     return pd.DataFrame({"count": count, "kind": kind}, index=diff.index)
 
 
+def _registered(entries: list[Deviation], cell: tuple | None) -> tuple[str, str]:
+    """(class, kind) of a registered cell named by ``entries`` (``cell``: its scene, row key,
+    column and engine, for ``whole`` claims; None where the register has none)."""
+    causes = [e for e in entries if e.kind != "unresolved" and e.tolerance is None]
+    unresolved = any(e.kind == "unresolved" for e in entries)
+    if causes and (not unresolved or (cell is not None and any(c.whole and c.covers(*cell)
+                                                               for e in causes for c in e.cells))):
+        kinds = sorted({e.kind for e in causes})
+        return "explained", kinds[0] if len(kinds) == 1 else SEVERAL
+    if unresolved:
+        return "unresolved", ""
+    return ("within-tolerance" if entries else "unexplained"), ""
+
+
 def count_cells(diff: pd.DataFrame, register: dict[str, Deviation]) -> pd.DataFrame:
     """Per engine (rows, in the diff's order), the cells of a scene's diff by what they count as
-    (``classify_cells``): columns COUNT_COLUMNS, integers.  ``cells`` = matched + explained +
-    unresolved + unexplained + not-produced, and ``explained`` = the sum of its kinds
+    (``classify_cells``): columns COUNT_COLUMNS, integers.  ``cells`` = the sum of CLASSES
+    (matched + explained + within-tolerance + unresolved + ...), ``explained`` = the sum of its kinds
     (EXPLAINED_BY: a cell explained by entries of several kinds counts once, under SEVERAL)."""
     classes = classify_cells(diff, register)
     engines = diff["engine"] if not diff.empty else pd.Series(dtype=str)
@@ -188,13 +234,13 @@ def total_counts(counts: list[pd.DataFrame]) -> pd.Series:
 
 def headline(total: pd.Series, by_kind: bool = False) -> str:
     """The counts in words (``total_counts``, or one engine's row of ``count_cells``): 'N cells:
-    a matched, b explained, c unresolved, d unexplained, e not produced'; the five add up to N.
-    ``by_kind``: the explained cells' kinds that count any, after b ('b explained (KIND k, ...)')."""
+    a matched, b explained, t within tolerance, c unresolved, d unexplained, e not produced'
+    (CLASSES, in order); they add up to N.  ``by_kind``: the explained cells' kinds that count
+    any, after b ('b explained (KIND k, ...)')."""
     kinds = ", ".join(f"{k} {total[k]}" for k in EXPLAINED_BY if total[k])
-    explained = f"{total['explained']} explained" + (f" ({kinds})" if by_kind and kinds else "")
-    return (f"{total['cells']} cells: {total['matched']} matched, {explained}, "
-            f"{total['unresolved']} unresolved, {total['unexplained']} unexplained, "
-            f"{total['not-produced']} not produced")
+    parts = [f"{total[c]} {words(c)}" + (f" ({kinds})" if c == "explained" and by_kind and kinds else "")
+             for c in CLASSES]
+    return f"{total['cells']} cells: " + ", ".join(parts)
 
 
 def column_max(diff: pd.DataFrame, what: str = "abs_diff") -> pd.DataFrame:

@@ -10,8 +10,8 @@ and ``python -m linkrepro.harness.docs`` fills each from a fresh computation (``
 if a page differs from what it would write, and say where).  The blocks:
 
 - ``results summary``, ``results <thesis>``: each published table's cells per engine, matched /
-  explained (by kind) / unresolved / unexplained / not produced (``diff.count_cells``, every
-  table scene's engines run now);
+  explained (by kind) / within tolerance / unresolved / unexplained / not produced
+  (``diff.count_cells``, every table scene's engines run now);
 - ``explain``: ``linkrepro explain ali1977-table1 160 src_dx`` as it prints (its first lines);
 - ``model assumptions NAME ...``: the register's model assumptions (kind ``model-assumption``)
   whose ``scenes`` hold a scene NAME, or a scene of the thesis NAME, with their effect;
@@ -34,7 +34,7 @@ from pathlib import Path
 import pandas as pd
 
 from . import register as register_mod
-from .diff import EXPLAINED_BY, count_cells
+from .diff import CLASSES, EXPLAINED_BY, count_cells, words
 
 BLOCK = re.compile(r"(<!-- generated: (?P<name>[^>]+?) -->\n)(?P<body>.*?)(<!-- end generated -->)", re.S)
 PAGES = ("README.md", "docs/*.md")
@@ -61,15 +61,15 @@ def _kinds(row: pd.Series) -> str:
 def results(thesis: str | None = None, engines: tuple[str, ...] = ("legacy",)) -> str:
     """A markdown table: per table scene (of ``thesis``, or all) and engine, the cells by what
     they count as."""
-    lines = ["| table | engine | cells | matched | explained (by kind) | unresolved | unexplained | not produced |",
-             "|---|---|---|---|---|---|---|---|"]
+    heads = ["table", "engine", "cells"] + [words(c) + (" (by kind)" if c == "explained" else "") for c in CLASSES]
+    lines = ["| " + " | ".join(heads) + " |", "|" + "---|" * len(heads)]
     for name, counts in table_counts().items():
         if thesis is not None and not name.startswith(thesis + "-"):
             continue
         for engine in engines:
             row = counts.loc[engine]
-            lines.append(f"| {name} | {engine} | {row['cells']} | {row['matched']} | {_kinds(row)} | "
-                         f"{row['unresolved']} | {row['unexplained']} | {row['not-produced']} |")
+            shown = [name, engine, row["cells"]] + [_kinds(row) if c == "explained" else row[c] for c in CLASSES]
+            lines.append("| " + " | ".join(str(v) for v in shown) + " |")
     return "\n".join(lines) + "\n"
 
 

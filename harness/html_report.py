@@ -4,7 +4,8 @@ over what ``report_folder.collect`` found in the folder.
 
 Per table scene: the published table in its printed layout, its columns headed in words and
 unit, each cell coloured by what it counts as for the engine chosen in the page's selector
-(``diff.classify_cells``: match, explained, unresolved, unexplained, not-produced) with how
+(``diff.classify_cells``: match, explained, within-tolerance, unresolved, unexplained,
+not-produced) with how
 many of its printed digits that engine reproduces; a click (or Enter) on a cell opens its
 trail (``harness/trail.py``): every engine's value, the register entries, the listing lines.
 Per other scene and per command's output: its markdown rendered (markdown-it, CommonMark with
@@ -42,7 +43,7 @@ PAGE_BUDGET = 3_000_000
 #: tagged src edits shown per register entry (the rest are counted)
 EDITS_SHOWN = 8
 #: what a cell is coloured as: ``diff.classify_cells``'s class, a matched cell shown as ``match``
-#: (its status in diff.csv); diff.csv's ``registered`` split into explained and unresolved
+#: (its status in diff.csv); diff.csv's ``registered`` split into explained, within-tolerance and unresolved
 SHOWN = {"matched": "match"}
 CELL_STATUSES = tuple(SHOWN.get(c, c) for c in CLASSES)
 
@@ -78,7 +79,8 @@ def _line(line: listing_lines.ListingLine) -> dict:
 def _entry(entry: Deviation) -> dict:
     edits = listing_lines.tagged(entry.id)
     return {"id": entry.id, "kind": entry.kind, "certainty": entry.certainty, "title": entry.title,
-            "fields": [(name, getattr(entry, name)) for name in ("where", "printed", "meant", "evidence", "effect")],
+            "fields": entry.how_known() + [(name, getattr(entry, name))
+                                           for name in ("where", "printed", "meant", "evidence", "effect")],
             "quirk": entry.quirk, "cited": [_line(c) for c in listing_lines.cited(entry)],
             "edits": [_line(e) for e in edits[:EDITS_SHOWN]], "more_edits": max(0, len(edits) - EDITS_SHOWN)}
 
@@ -139,8 +141,8 @@ def table_view(scene, diff: pd.DataFrame, register: dict[str, Deviation], blocks
 
 
 def overview(counts: pd.DataFrame) -> list[dict]:
-    """A scene's ``diff.count_cells`` (cells; matched, explained by kind, unresolved,
-    unexplained, not-produced) as the overview's rows, the engines in their order."""
+    """A scene's ``diff.count_cells`` (cells; matched, explained by kind, within-tolerance,
+    unresolved, unexplained, not-produced) as the overview's rows, the engines in their order."""
     return [{"engine": engine, **{c: int(counts.at[engine, c]) for c in counts.columns}}
             for engine in ENGINES if engine in counts.index]
 

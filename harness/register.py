@@ -8,6 +8,14 @@ is a command the entry's text quotes (in backticks) for a reader to re-measure w
 those figures as the text quotes them.  ``figures_reproduced`` says whether what the code
 printed reproduces them to the digits quoted (tests/harness/test_register_citations.py runs
 every check).
+
+How an entry knows (``basis``, one of BASES; ``settles``: what would settle an inferred one) and
+how it explains cells: by a cause, or only by closeness (``tolerance``: a relative tolerance
+within which it puts a cell's difference down to itself, without a run showing that cell's
+cause; ``diff.classify_cells`` counts such cells apart, as within tolerance).  A ``cells`` claim
+with ``whole = true`` says the entry accounts for those cells' whole difference, so that an
+``unresolved`` entry naming them too does not make them unresolved (the entry's evidence and a
+``[[deviation.check]]`` show it).
 """
 from __future__ import annotations
 
@@ -26,6 +34,11 @@ KINDS = ("ocr", "original-bug", "portability", "published-misprint", "published-
 #: a modelling choice of a thesis that the corrected engines keep (not a bug): it claims no cell
 #: and switches no quirk; its ``scenes`` are those whose corrected results still assume it
 MODEL_ASSUMPTION = "model-assumption"
+#: how an entry knows what it says (``basis``), and what each means
+BASES = {"measured": "a run shows it (a scene, a check, a test or a command computes the effect or the cause)",
+         "inferred": "from the published table's fit, neighbouring rows or a reconstruction of a lost page; "
+                     "no run shows the cause itself",
+         "theory": "from the thesis's theory chapter, an equation or an identity, not a run"}
 REQUIRED = ("id", "kind", "title", "where", "printed", "meant", "evidence", "effect")
 #: the text fields of an entry a reader reads (and the register's tests search)
 TEXT_FIELDS = ("title", "where", "printed", "meant", "evidence", "effect")
@@ -40,6 +53,7 @@ class CellClaim:
     rows: tuple          # key values (e.g. input angles); ("*",) for every row
     columns: tuple       # column names; ("*",) for every column
     engines: tuple
+    whole: bool = False  # the entry accounts for these cells' whole difference (wins over ``unresolved``)
 
     def covers(self, scene: str, row, column: str, engine: str) -> bool:
         return (scene == self.scene and engine in self.engines
@@ -79,6 +93,9 @@ class Deviation:
     effect: str
     quirk: str | None = None
     certainty: str | None = None
+    basis: str | None = None                      # one of BASES (None: not stated)
+    settles: str | None = None                    # what would settle it (required where inferred)
+    tolerance: float | None = None                # explains a cell only by closeness: relative tolerance
     cells: tuple = ()
     moves: dict = field(default_factory=dict)     # scene -> columns the quirk moves
     readings: tuple = ()                          # {file, chosen, scan}: the scan's text put back
@@ -89,6 +106,17 @@ class Deviation:
     def text(self) -> str:
         """Every field a reader reads, one per line."""
         return "\n".join(getattr(self, name) for name in TEXT_FIELDS)
+
+    def how_known(self) -> list[tuple[str, str]]:
+        """(field, words) for a reader: its basis and what it means, what would settle it, and
+        the tolerance within which it explains a cell (the last two only where stated)."""
+        shown = [("basis", f"{self.basis}: {BASES[self.basis]}" if self.basis else "not stated")]
+        if self.settles:
+            shown.append(("settles", self.settles))
+        if self.tolerance is not None:
+            shown.append(("tolerance", f"explains a cell only by closeness: within {self.tolerance:g} relative "
+                                       "of the printed value (counted as within tolerance, not as explained)"))
+        return shown
 
 
 def _check(entry_id: str, raw: dict) -> Check:
@@ -105,6 +133,65 @@ def _check(entry_id: str, raw: dict) -> Check:
     if figures and check.code is None:
         raise ValueError(f"register entry {entry_id}: check figures {figures} need code that prints them")
     return check
+
+
+def _cells(raw: dict) -> tuple[CellClaim, ...]:
+    claims = []
+    for c in raw.get("cells", []):
+        whole = c.get("whole", False)
+        if not isinstance(whole, bool):
+            raise ValueError(f"register entry {raw['id']}: cells 'whole' is {whole!r}, not true or false")
+        claims.append(CellClaim(c["scene"], tuple(c.get("rows", ["*"])), tuple(c.get("columns", ["*"])),
+                                tuple(c["engines"]), whole))
+    return tuple(claims)
+
+
+def _how_known(raw: dict) -> dict:
+    """``basis``, ``settles`` and ``tolerance`` of an entry, validated (ValueError naming the entry)."""
+    name, basis, settles, tolerance = raw["id"], raw.get("basis"), raw.get("settles"), raw.get("tolerance")
+    if basis is not None and basis not in BASES:
+        raise ValueError(f"register entry {name}: basis {basis!r} not in {tuple(BASES)}")
+    if settles is not None and not (isinstance(settles, str) and settles.strip()):
+        raise ValueError(f"register entry {name}: settles must say what evidence would settle it, not {settles!r}")
+    if basis == "inferred" and settles is None:
+        raise ValueError(f"register entry {name}: basis 'inferred' needs 'settles' (what evidence would settle it)")
+    if tolerance is not None:
+        if isinstance(tolerance, bool) or not isinstance(tolerance, (int, float)) or not 0 < tolerance < 1:
+            raise ValueError(f"register entry {name}: tolerance {tolerance!r} is not a relative tolerance in (0, 1)")
+        if raw["kind"] == "unresolved":
+            raise ValueError(f"register entry {name}: an unresolved entry explains nothing, within a tolerance or not")
+        tolerance = float(tolerance)
+    return {"basis": basis, "settles": settles, "tolerance": tolerance}
+
+
+def _check_assumption(raw: dict) -> None:
+    """``scenes`` for a model assumption, and only for one: a list of scene names; a model
+    assumption claims no cells, switches no quirk and explains nothing within a tolerance."""
+    name, scenes, assumed = raw["id"], raw.get("scenes"), raw["kind"] == MODEL_ASSUMPTION
+    if not assumed and scenes is not None:
+        raise ValueError(f"register entry {name}: `scenes` is for a {MODEL_ASSUMPTION} only (kind {raw['kind']!r})")
+    if not assumed:
+        return
+    if not (isinstance(scenes, list) and scenes and all(isinstance(s, str) and s.strip() for s in scenes)):
+        raise ValueError(f"register entry {name}: a {MODEL_ASSUMPTION} needs `scenes`, the names of the scenes "
+                         f"whose corrected results assume it, not {scenes!r}")
+    extra = [key for key in ("cells", "quirk", "moves", "tolerance") if raw.get(key) is not None]
+    if extra:
+        raise ValueError(f"register entry {name}: a {MODEL_ASSUMPTION} claims no cells and switches no quirk, "
+                         f"but gives {', '.join(extra)}")
+
+
+def _check_whole(entry: Deviation) -> None:
+    """A claim that an entry accounts for cells' whole difference needs an entry that explains
+    by a cause (not unresolved, not a tolerance) and a check that re-measures it."""
+    if not any(c.whole for c in entry.cells):
+        return
+    if entry.kind == "unresolved" or entry.tolerance is not None:
+        raise ValueError(f"register entry {entry.id}: 'whole' cells need an entry that explains by a cause, "
+                         f"not {'an unresolved one' if entry.kind == 'unresolved' else 'a tolerance'}")
+    if not entry.checks:
+        raise ValueError(f"register entry {entry.id}: 'whole' cells need a [[deviation.check]] that measures "
+                         "the whole difference")
 
 
 def parsed(path: Path = REGISTER_PATH) -> dict:
@@ -130,18 +217,15 @@ def load(path: Path = REGISTER_PATH) -> dict[str, Deviation]:
             raise ValueError(f"register entry {raw['id']}: kind {raw['kind']!r} not in {KINDS}")
         if raw["id"] in entries:
             raise ValueError(f"register id {raw['id']} appears twice")
-        if (raw["kind"] == MODEL_ASSUMPTION) != bool(raw.get("scenes")) or (
-                raw["kind"] == MODEL_ASSUMPTION and any(raw.get(k) for k in ("cells", "quirk", "moves"))):
-            raise ValueError(f"register entry {raw['id']}: `scenes` (the scenes whose corrected results assume it) "
-                             f"for a {MODEL_ASSUMPTION} and only for one, which claims no cells and has no quirk")
-        cells = tuple(CellClaim(c["scene"], tuple(c.get("rows", ["*"])), tuple(c.get("columns", ["*"])),
-                                tuple(c["engines"])) for c in raw.get("cells", []))
-        entries[raw["id"]] = Deviation(
+        _check_assumption(raw)
+        entry = Deviation(
             id=raw["id"], kind=raw["kind"], title=raw["title"], where=raw["where"],
             printed=raw["printed"], meant=raw["meant"], evidence=raw["evidence"],
-            effect=raw["effect"], quirk=raw.get("quirk"), certainty=raw.get("certainty"),
-            cells=cells, moves=dict(raw.get("moves", {})), readings=tuple(raw.get("reading", [])),
+            effect=raw["effect"], quirk=raw.get("quirk"), certainty=raw.get("certainty"), **_how_known(raw),
+            cells=_cells(raw), moves=dict(raw.get("moves", {})), readings=tuple(raw.get("reading", [])),
             checks=tuple(_check(raw["id"], c) for c in raw.get("check", [])), scenes=tuple(raw.get("scenes", ())))
+        _check_whole(entry)
+        entries[raw["id"]] = entry
     return entries
 
 

@@ -214,11 +214,13 @@ def counts_table(counts: pd.DataFrame) -> pd.DataFrame:
 
 
 COUNTS_WORDS = ("A cell is *matched* when it is within half a unit of the printed last digit. Any other "
-                "produced cell is *explained* when a register entry of a kind other than `unresolved` names "
-                "it (counted once, under that kind, or under `several kinds` when its entries are of more "
-                "than one), *unresolved* when only `unresolved` entries name it (we do not know why it "
-                "differs), else *unexplained*; *not-produced*: the engine does not give it. diff.csv's "
-                "status `registered` covers both explained and unresolved cells.")
+                "produced cell that register entries name is *explained* when an entry shows its cause (counted "
+                "once, under that entry's kind, or under `several kinds` when its causes are of more than one); "
+                "*within-tolerance* when its only explanation is closeness (an entry that states a tolerance: "
+                "counted apart, not explained); *unresolved* when an `unresolved` entry names it (we do not know "
+                "why it differs), unless a cause accounts for its whole difference; else *unexplained*, as is a "
+                "cell nothing names; *not-produced*: the engine does not give it. diff.csv's status "
+                "`registered` covers the explained, within-tolerance and unresolved cells.")
 
 
 ASSUMPTIONS_WORDS = ("'Corrected' means the listings' bugs removed within the thesis's model: the corrected engine "
@@ -242,6 +244,7 @@ def assumptions_markdown(scene: str, register: dict[str, Deviation]) -> list[str
 
 def render_entry(entry: Deviation) -> str:
     lines = [f"#### {entry.id} ({entry.kind}{', ' + entry.certainty if entry.certainty else ''}): {entry.title}",
+             *(f"- {name}: {text}" for name, text in entry.how_known()),
              f"- where: {entry.where}", f"- printed: `{entry.printed}`", f"- meant: `{entry.meant}`",
              f"- evidence: {entry.evidence}", f"- effect: {entry.effect}"]
     if entry.quirk:

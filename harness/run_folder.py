@@ -10,7 +10,8 @@
 - ``read_scene`` says whether a scene's folder is what its run wrote: an outcome.json that
   cannot be read, or is another scene's, a recorded file changed, missing or unreadable, a file
   the run did not write, or files without an outcome.json (a run of an earlier version killed)
-  make it damaged or incomplete; ``linkrepro verify`` fails on it and the report says it.
+  make it damaged or incomplete, and counts under other classes than ``diff.COUNT_COLUMNS``
+  (an earlier version's) outdated; ``linkrepro verify`` fails on it and the report says it.
 - manifest.json and the reports are replaced whole (``replace_text``: a temporary file renamed)
   under the folder's lock (``locked``: ``flock`` on ``.linkrepro.lock``, held across the
   manifest's read, merge and replace and the report's collect, render and replace), so that two
@@ -28,6 +29,7 @@ import threading
 from contextlib import contextmanager
 from pathlib import Path
 
+from .diff import COUNT_COLUMNS
 from .scene import Outcome
 
 try:
@@ -223,6 +225,9 @@ def read_scene(out_dir: Path, name: str) -> tuple[Outcome | None, str]:
         return None, f"damaged: {exc}"
     if outcome.scene != name:
         return None, f"damaged: {name}/{Outcome.FILE} is the outcome of {outcome.scene!r} (a folder renamed?)"
+    if outcome.counts is not None and list(outcome.counts.columns) != list(COUNT_COLUMNS):
+        return None, (f"outdated: {name}/{Outcome.FILE} counts its cells as {', '.join(outcome.counts.columns)}, "
+                      f"not as this linkrepro does ({', '.join(COUNT_COLUMNS)}); run the scene again")
     if outcome.files is None:              # written before outcomes recorded their files
         return outcome, ""
     try:

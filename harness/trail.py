@@ -14,6 +14,7 @@ from pathlib import Path
 import pandas as pd
 
 from . import listing_lines, register as register_mod
+from .diff import classify_cells, words
 from .engines import ENGINES
 from .listing_lines import ListingLine
 from .published_tables import PUBLISHED_DIR
@@ -29,13 +30,15 @@ class CellNotFound(LookupError):
 class EngineCell:
     """One engine's value of a cell: ``difference`` = |value - published| (the table's unit) and
     the ``digits`` agreed with the published value (``diff.agreed_digits``), at full precision
-    (as ``diff.csv`` gives them); NaN when not produced."""
+    (as ``diff.csv`` gives them); NaN when not produced.  ``counts_as``: what the cell counts as
+    (``diff.classify_cells``: 'matched', 'explained: KIND', 'within tolerance', 'unresolved', ...)."""
     engine: str
     value: float
     status: str
     difference: float
     digits: float
     register_ids: tuple[str, ...]
+    counts_as: str
 
 
 @dataclass(frozen=True)
@@ -97,6 +100,7 @@ def cell_trail(scene: TableScene, row: str, column: str, diff: pd.DataFrame,
         rows = ", ".join(dict.fromkeys(str(k) for k in keys))
         raise CellNotFound(f"{scene.name} has no row {row!r}; its rows ({scene.key_name}): {rows}")
     engines, ids = [], []
+    classes = classify_cells(cell, register)
     for engine in ENGINES:
         found = cell[cell["engine"] == engine]
         if found.empty:
@@ -104,8 +108,9 @@ def cell_trail(scene: TableScene, row: str, column: str, diff: pd.DataFrame,
         r = found.iloc[0]
         names = tuple(str(r["register_ids"]).split()) if isinstance(r["register_ids"], str) else ()
         ids += names
+        count, kind = classes.loc[found.index[0]]
         engines.append(EngineCell(engine, float(r["value"]), str(r["status"]), float(r["abs_diff"]),
-                                  float(r["digits"]), names))
+                                  float(r["digits"]), names, words(count) + (f": {kind}" if kind else "")))
     first = cell.iloc[0]
     key = str(first[scene.key_name])
     statements = [line for statement in scene.statements(key, column) for line in listing_lines.find(statement)]
@@ -137,18 +142,19 @@ def as_text(trail: Trail, edits_shown: int = 6, width: int = 100) -> str:
     out = [f"{scene.name}  {scene.key_name} = {trail.row}  column {trail.column}", f"  {scene.title}", "",
            f"published  {trail.published_text}  (+/- {trail.half_unit:g}, {printed_digits(trail.published_text)} "
            f"significant digits; {trail.source})", "",
-           f"  {'engine':15s} {'value':>16s} {'|- published|':>13s} {'digits':>6s}  status"]
+           f"  {'engine':15s} {'value':>16s} {'|- published|':>13s} {'digits':>6s}  counts as (register ids)"]
     for e in trail.engines:
         ids = f"  ({' '.join(e.register_ids)})" if e.register_ids else ""
         diff = "" if math.isnan(e.value) else f"{e.difference:.3g}"
-        out.append(f"  {e.engine:15s} {_number(e.value):>16s} {diff:>13s} {_digits(e.digits):>6s}  {e.status}{ids}")
+        out.append(f"  {e.engine:15s} {_number(e.value):>16s} {diff:>13s} {_digits(e.digits):>6s}  {e.counts_as}{ids}")
     out += ["", "listing lines behind the cell:"]
     out += [f"  {line.where()}\n      {line.text.strip()}" for line in trail.statements] or ["  (none named)"]
     for entry in trail.entries:
         out += ["", f"{entry.id}  {entry.kind}{', ' + entry.certainty if entry.certainty else ''}: {entry.title}"]
-        out += [textwrap.fill(getattr(entry, field), width, initial_indent=f"  {field + ':':10s}",
-                              subsequent_indent=" " * 12, break_on_hyphens=False)
-                for field in ("where", "printed", "meant", "evidence", "effect")]
+        fields = entry.how_known() + [(field, getattr(entry, field)) for field in ("where", "printed", "meant",
+                                                                                     "evidence", "effect")]
+        out += [textwrap.fill(text, width, initial_indent=f"  {field + ':':10s}", subsequent_indent=" " * 12,
+                              break_on_hyphens=False) for field, text in fields]
         if entry.quirk:
             out.append(f"  port quirk: {entry.quirk}")
         out += [f"  printed line {line.where()}\n      {line.text.strip()}" for line in listing_lines.cited(entry)]

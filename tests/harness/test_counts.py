@@ -19,82 +19,113 @@ from linkrepro.harness import register as register_mod
 from linkrepro.harness.cli import main
 from linkrepro.harness.diff import (CLASSES, COUNT_COLUMNS, EXPLAINED_BY, SEVERAL, classify_cells, count_cells,
                                     headline, total_counts)
-from linkrepro.harness.register import Deviation
+from linkrepro.harness.register import CellClaim, Check, Deviation
 
 SCENE = "ali1977-table3"
 
 
-def _entry(id_: str, kind: str) -> Deviation:
-    return Deviation(id=id_, kind=kind, title="t", where="w", printed="p", meant="m", evidence="e", effect="f")
+def _entry(id_: str, kind: str, **more) -> Deviation:
+    return Deviation(id=id_, kind=kind, title="t", where="w", printed="p", meant="m", evidence="e", effect="f", **more)
 
 
+#: W1 accounts for the whole difference of scene s's 'after' cell at row 10 for legacy (and claims row 20 too)
+WHOLE = (CellClaim("s", (10,), ("after",), ("legacy",), whole=True), CellClaim("s", (20,), ("after",), ("legacy",)))
 REGISTER = {e.id: e for e in (_entry("U1", "unresolved"), _entry("U2", "unresolved"), _entry("B1", "original-bug"),
-                              _entry("M1", "published-misprint"), _entry("P1", "portability"))}
+                              _entry("M1", "published-misprint"), _entry("P1", "portability"),
+                              _entry("T1", "portability", tolerance=1e-6),
+                              _entry("W1", "original-bug", cells=WHOLE, checks=(Check(command="true"),)))}
 
-#: (engine, status, register ids) -> what it must count as, and the kind of an explained cell
+#: (engine, row, status, register ids) -> what it must count as, and the kind of an explained cell
 CELLS = [
-    ("legacy", "match", None, "matched", ""),
-    ("legacy", "registered", "U1", "unresolved", ""),                 # only an unresolved entry
-    ("legacy", "registered", "U1 U2", "unresolved", ""),              # two, both unresolved
-    ("legacy", "registered", "B1 U1", "explained", "original-bug"),   # unresolved and a real one
-    ("legacy", "registered", "X9", "unexplained", ""),                # an id the register lacks
-    ("legacy", "registered", "U1 X9", "unresolved", ""),              # the missing id is ignored
-    ("legacy", "registered", "P1 X9", "explained", "portability"),
-    ("legacy", "registered", "B1 M1", "explained", SEVERAL),          # two real kinds: once
-    ("legacy", "registered", "B1 M1 U1", "explained", SEVERAL),
-    ("legacy", "unexplained", "", "unexplained", ""),
-    ("legacy", "not-produced", "B1", "not-produced", ""),             # not produced, whatever its ids
-    ("printed", "not-produced", None, "not-produced", ""),
-    ("printed", "registered", "M1", "explained", "published-misprint"),
-    ("printed", "registered", "M1 M1", "explained", "published-misprint"),
-    ("printed", "match", "", "matched", ""),
+    ("legacy", 0, "match", None, "matched", ""),
+    ("legacy", 0, "registered", "U1", "unresolved", ""),                 # only an unresolved entry
+    ("legacy", 0, "registered", "U1 U2", "unresolved", ""),              # two, both unresolved
+    ("legacy", 0, "registered", "B1 U1", "unresolved", ""),              # a cause that is not the whole: unresolved wins
+    ("legacy", 0, "registered", "X9", "unexplained", ""),                # an id the register lacks
+    ("legacy", 0, "registered", "U1 X9", "unresolved", ""),              # the missing id is ignored
+    ("legacy", 0, "registered", "P1 X9", "explained", "portability"),
+    ("legacy", 0, "registered", "B1 M1", "explained", SEVERAL),          # two real kinds: once
+    ("legacy", 0, "registered", "B1 M1 U1", "unresolved", ""),
+    ("legacy", 0, "registered", "T1", "within-tolerance", ""),           # closeness only: apart
+    ("legacy", 0, "registered", "T1 X9", "within-tolerance", ""),
+    ("legacy", 0, "registered", "T1 U1", "unresolved", ""),              # a tolerance never hides an unresolved cause
+    ("legacy", 0, "registered", "M1 T1", "explained", "published-misprint"),   # a cause: the tolerance is no kind
+    ("legacy", 10, "registered", "U1 W1", "explained", "original-bug"),  # W1 accounts for the whole difference
+    ("legacy", 10, "registered", "T1 U1 W1", "explained", "original-bug"),
+    ("legacy", 20, "registered", "U1 W1", "unresolved", ""),             # W1's claim there is not whole
+    ("legacy", 0, "unexplained", "", "unexplained", ""),
+    ("legacy", 0, "not-produced", "B1", "not-produced", ""),             # not produced, whatever its ids
+    ("printed", 10, "registered", "U1 W1", "unresolved", ""),            # the whole claim is legacy's only
+    ("printed", 0, "not-produced", None, "not-produced", ""),
+    ("printed", 0, "registered", "M1", "explained", "published-misprint"),
+    ("printed", 0, "registered", "M1 M1", "explained", "published-misprint"),
+    ("printed", 0, "registered", "T1", "within-tolerance", ""),
+    ("printed", 0, "match", "", "matched", ""),
 ]
 
 
 def made_up_diff() -> pd.DataFrame:
-    return pd.DataFrame([{"engine": e, "status": s, "register_ids": ids} for e, s, ids, _, _ in CELLS])
+    """A diff as diff_scene writes it (scene, engine, the row key, column first)."""
+    return pd.DataFrame([{"scene": "s", "engine": e, "crank_deg": row, "column": "after", "status": s,
+                          "register_ids": ids} for e, row, s, ids, _, _ in CELLS])
 
 
 def test_classify_cells_on_a_made_up_diff():
     classes = classify_cells(made_up_diff(), REGISTER)
-    assert list(classes["count"]) == [c[3] for c in CELLS]
-    assert list(classes["kind"]) == [c[4] for c in CELLS]
+    assert list(classes["count"]) == [c[4] for c in CELLS]
+    assert list(classes["kind"]) == [c[5] for c in CELLS]
+
+
+def test_the_whole_claim_decides_for_its_cells_only():
+    """Without W1's whole claim, every cell it names with U1 is unresolved; a register without any
+    whole claim classifies a diff that has no scene or key columns."""
+    plain = {**REGISTER, "W1": _entry("W1", "original-bug", cells=(CellClaim("s", (10, 20), ("after",), ("legacy",)),))}
+    classes = classify_cells(made_up_diff(), plain)
+    named = [i for i, c in enumerate(CELLS) if c[3] and "U1" in c[3].split()]
+    assert set(classes["count"].iloc[named]) == {"unresolved"}
+    bare = made_up_diff().drop(columns=["scene", "crank_deg", "column"])
+    assert list(classify_cells(bare, plain)["count"]) == list(classes["count"])
+    with pytest.raises(ValueError, match="whole"):
+        classify_cells(bare, REGISTER)
 
 
 def test_count_cells_on_a_made_up_diff():
     counts = count_cells(made_up_diff(), REGISTER)
     assert list(counts.index) == ["legacy", "printed"] and list(counts.columns) == list(COUNT_COLUMNS)
-    legacy = {"cells": 11, "matched": 1, "explained": 4, "original-bug": 1, "portability": 1, SEVERAL: 2,
-              "unresolved": 3, "unexplained": 2, "not-produced": 1}
-    printed = {"cells": 4, "matched": 1, "explained": 2, "published-misprint": 2, "not-produced": 1}
+    legacy = {"cells": 18, "matched": 1, "explained": 5, "original-bug": 2, "portability": 1, SEVERAL: 1,
+              "published-misprint": 1, "within-tolerance": 2, "unresolved": 7, "unexplained": 2, "not-produced": 1}
+    printed = {"cells": 6, "matched": 1, "explained": 2, "published-misprint": 2, "within-tolerance": 1,
+               "unresolved": 1, "not-produced": 1}
     for engine, expected in (("legacy", legacy), ("printed", printed)):
         assert counts.loc[engine].to_dict() == {c: expected.get(c, 0) for c in COUNT_COLUMNS}, engine
     total = total_counts([counts, counts.loc[["printed"]]])
-    assert total["cells"] == 19 and total["explained"] == 8 and total["unresolved"] == 3
-    assert total["published-misprint"] == 4 and total["unexplained"] == 2 and total["not-produced"] == 3
-    assert headline(counts.loc["legacy"]) == ("11 cells: 1 matched, 4 explained, 3 unresolved, 2 unexplained, "
-                                              "1 not produced")
+    assert total["cells"] == 30 and total["explained"] == 9 and total["unresolved"] == 9
+    assert total["within-tolerance"] == 4 and total["published-misprint"] == 5
+    assert total["unexplained"] == 2 and total["not-produced"] == 3
+    assert headline(counts.loc["legacy"]) == ("18 cells: 1 matched, 5 explained, 2 within tolerance, 7 unresolved, "
+                                              "2 unexplained, 1 not produced")
     assert headline(counts.loc["legacy"], by_kind=True) == (
-        "11 cells: 1 matched, 4 explained (original-bug 1, portability 1, several kinds 2), 3 unresolved, "
-        "2 unexplained, 1 not produced")
+        "18 cells: 1 matched, 5 explained (original-bug 2, portability 1, published-misprint 1, several kinds 1), "
+        "2 within tolerance, 7 unresolved, 2 unexplained, 1 not produced")
 
 
 def test_an_unresolved_entry_never_explains():
     """Every cell named only by unresolved entries counts as unresolved, with no kind of explained."""
     diff = pd.DataFrame({"engine": ["a"] * 3, "status": ["registered"] * 3, "register_ids": ["U1", "U2", "U1 U2"]})
-    counts = count_cells(diff, REGISTER).loc["a"]
+    counts = count_cells(diff, {k: REGISTER[k] for k in ("U1", "U2")}).loc["a"]
     assert counts["unresolved"] == 3 and counts["explained"] == 0 and counts[list(EXPLAINED_BY)].sum() == 0
 
 
 def test_no_engine_ran_counts_nothing():
     counts = count_cells(pd.DataFrame([]), REGISTER)
     assert counts.empty and list(counts.columns) == list(COUNT_COLUMNS)
-    assert headline(total_counts([counts])) == "0 cells: 0 matched, 0 explained, 0 unresolved, 0 unexplained, 0 not produced"
+    assert headline(total_counts([counts])) == ("0 cells: 0 matched, 0 explained, 0 within tolerance, 0 unresolved, "
+                                                "0 unexplained, 0 not produced")
 
 
 def test_an_unknown_status_is_an_error():
     with pytest.raises(ValueError, match="registred"):
-        classify_cells(pd.DataFrame({"engine": ["a"], "status": ["registred"], "register_ids": [""]}), REGISTER)
+        classify_cells(pd.DataFrame({"engine": ["a"], "status": ["registred"], "register_ids": [""]}), {})
 
 
 # -- a fresh run: every place shows the function's numbers -------------------------------------
@@ -117,18 +148,18 @@ def expected(fresh) -> pd.DataFrame:
     return count_cells(diff, register_mod.load())
 
 
-def _adds_up(words: str) -> dict[str, int]:
-    """The numbers of a headline, read back; checked to add up."""
-    found = re.fullmatch(r"(\d+) cells: (\d+) matched, (\d+) explained(?: \(([^)]*)\))?, (\d+) unresolved, "
-                         r"(\d+) unexplained, (\d+) not produced", words)
-    assert found, words
-    cells, matched, explained, kinds, unresolved, unexplained, not_produced = found.groups()
+def _adds_up(words_: str) -> dict[str, int]:
+    """The numbers of a headline, read back (every class of CLASSES, in order); checked to add up."""
+    found = re.fullmatch(r"(\d+) cells: (\d+) matched, (\d+) explained(?: \(([^)]*)\))?, (\d+) within tolerance, "
+                         r"(\d+) unresolved, (\d+) unexplained, (\d+) not produced", words_)
+    assert found, words_
+    cells, matched, explained, kinds, *rest = found.groups()
     numbers = {"cells": int(cells), "matched": int(matched), "explained": int(explained),
-               "unresolved": int(unresolved), "unexplained": int(unexplained), "not-produced": int(not_produced)}
-    assert numbers["cells"] == sum(numbers[c] for c in CLASSES), words
+               **{c: int(n) for c, n in zip(CLASSES[2:], rest, strict=True)}}
+    assert set(numbers) == {"cells", *CLASSES} and numbers["cells"] == sum(numbers[c] for c in CLASSES), words_
     if kinds:
         by_kind = {k: int(n) for k, n in (part.rsplit(" ", 1) for part in kinds.split(", "))}
-        assert sum(by_kind.values()) == numbers["explained"] and set(by_kind) <= set(EXPLAINED_BY), words
+        assert sum(by_kind.values()) == numbers["explained"] and set(by_kind) <= set(EXPLAINED_BY), words_
         numbers.update(by_kind)
     return numbers
 
@@ -163,7 +194,7 @@ def _same(shown: pd.DataFrame, counts: pd.DataFrame) -> None:
     left_out = set(full.columns) - set(shown.columns)
     assert all(full[c].eq(0).all() for c in left_out), left_out
     pd.testing.assert_frame_equal(shown, full[list(shown.columns)], check_dtype=False)
-    assert (shown["cells"] == shown[["matched", "explained", "unresolved", "unexplained", "not-produced"]].sum(axis=1)).all()
+    assert (shown["cells"] == shown[list(CLASSES)].sum(axis=1)).all()
 
 
 def test_the_run_has_unresolved_cells(expected):
@@ -256,9 +287,9 @@ def test_html_overview_shows_the_counts(fresh, expected):
     assert page.total.endswith(f": {headline(expected.sum(axis=0), by_kind=True)}.")
     numbers = _adds_up(page.total.split(": ", 1)[1].rstrip("."))
     assert numbers == {c: int(n) for c, n in expected.sum(axis=0).items() if c in numbers}
-    # the cells' colours count the same: diff.csv's "registered" split into explained and unresolved
+    # the cells' colours count the same: diff.csv's "registered" split into explained, within-tolerance, unresolved
     for engine in expected.index:
         colours = pd.Series([c[engine] for c in page.cells]).value_counts()
-        assert {s: int(colours.get(s, 0)) for s in ("match", "explained", "unresolved", "unexplained", "not-produced")} \
+        assert {s: int(colours.get(s, 0)) for s in ("match", *CLASSES[1:])} \
             == {"match": expected.at[engine, "matched"], **{c: expected.at[engine, c] for c in CLASSES[1:]}}, engine
         assert "registered" not in colours
