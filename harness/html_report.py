@@ -29,7 +29,7 @@ from . import figures as figures_mod, listing_lines, manifest, register as regis
 from .diff import CLASSES, COUNT_COLUMNS, EXPLAINED_BY, classify_cells, headline
 from .engines import ENGINES
 from .register import Deviation
-from .report import ASSUMPTIONS_WORDS, assumptions, heading
+from .report import ASSUMPTIONS_WORDS, heading
 from .scenes import SCENES, TABLES
 from .trail import digits_reproduced, printed_digits, published_source, read_diff
 
@@ -165,7 +165,8 @@ def _scene_view(folder: "Folder", section: "SceneSection", register, blocks, cel
             "outcome": section.outcome, "figures": [], "table": None, "overview": "", "counts": [], "assumptions": []}
     if section.outcome is None:
         return view
-    view["assumptions"] = [{"id": e.id, "title": e.title, "effect": e.effect} for e in assumptions(section.name, register)]
+    view["assumptions"] = [{"id": e.id, "title": e.title, "effect": e.effect}
+                           for e in register_mod.assumed_by(section.name, register)]
     here = folder.out_dir / section.name
     view["figures"] = figures(here) if here.is_dir() else []
     if section.name in TABLES and (here / "diff.csv").is_file():

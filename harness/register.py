@@ -229,6 +229,19 @@ def load(path: Path = REGISTER_PATH) -> dict[str, Deviation]:
     return entries
 
 
+def assumed_by(scene: str, entries: dict[str, Deviation]) -> list[Deviation]:
+    """The model assumptions (kind MODEL_ASSUMPTION) whose ``scenes`` name ``scene``: the thesis's
+    modelling choices its corrected results keep, by id."""
+    return [entry for _, entry in sorted(entries.items()) if scene in entry.scenes]
+
+
+def assumptions_said(scene: str, entries: dict[str, Deviation]) -> str:
+    """One sentence naming the model assumptions ``scene``'s corrected engine keeps ("" where none)."""
+    kept = "; ".join(f"{entry.id} {entry.title}" for entry in assumed_by(scene, entries))
+    return (f"The corrected engine (port_corrected) keeps the thesis's model (register kind `model-assumption`, "
+            f"not bugs): {kept}.") if kept else ""
+
+
 def by_quirk(entries: dict[str, Deviation]) -> dict[str, Deviation]:
     return {e.quirk: e for e in entries.values() if e.quirk}
 

@@ -13,7 +13,7 @@ from matplotlib.figure import Figure
 
 from .diff import EXPLAINED_BY, classify_cells, column_max, count_cells
 from .figures import ENGINE_STYLE, MAX_WIDTH_IN, RC, new_figure, save
-from .register import Deviation
+from .register import Deviation, assumed_by
 
 
 def markdown_table(frame: pd.DataFrame, floatfmt: str = "{:.3g}") -> str:
@@ -228,14 +228,9 @@ ASSUMPTIONS_WORDS = ("'Corrected' means the listings' bugs removed within the th
                      "with the effect an alternative was measured to have.")
 
 
-def assumptions(scene: str, register: dict[str, Deviation]) -> list[Deviation]:
-    """The register's model assumptions whose ``scenes`` name ``scene`` (its corrected results keep them), by id."""
-    return [entry for _, entry in sorted(register.items()) if scene in entry.scenes]
-
-
 def assumptions_markdown(scene: str, register: dict[str, Deviation]) -> list[str]:
     """The section on what the corrected engine of ``scene`` still assumes (no lines where nothing)."""
-    found = assumptions(scene, register)
+    found = assumed_by(scene, register)
     if not found:
         return []
     return (["## What the corrected engine still assumes", "", ASSUMPTIONS_WORDS, ""]

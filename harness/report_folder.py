@@ -24,7 +24,7 @@ import pandas as pd
 
 from . import manifest, register as register_mod, run_folder
 from .diff import headline, total_counts
-from .report import COUNTS_WORDS, assumptions
+from .report import COUNTS_WORDS
 from .scene import Outcome
 from .scenes import SCENES, THESES, commands_of
 
@@ -139,11 +139,9 @@ def _scene_lines(section: SceneSection, register: dict) -> list[str]:
     if section.outcome is None:
         return [f"## {section.name}", "", section.title, "", f"**{section.problem}**", ""]
     o = section.outcome
-    kept = assumptions(o.scene, register)
+    said = register_mod.assumptions_said(o.scene, register)
     lines = [f"## [{o.scene}]({o.scene}/report.md)", "", o.title, "", *o.overview, "",
-             *([f"The corrected engine still assumes (the thesis's model, register kind `model-assumption`): "
-                + "; ".join(f"{e.id} {e.title}" for e in kept) + ".", ""] if kept else []),
-             f"Run {o.finished}, wall time {o.seconds:.2f} s.", ""]
+             *([said, ""] if said else []), f"Run {o.finished}, wall time {o.seconds:.2f} s.", ""]
     skipped = [f"**Skipped: {o.skipped}**", ""] if o.skipped else []
     return lines + skipped + [f"**{failure}**\n" for failure in o.failures]
 
