@@ -74,7 +74,7 @@ def results(thesis: str | None = None, engines: tuple[str, ...] = ("legacy",)) -
 
 
 #: the lines of the explain trail the README shows (the rest: run it)
-EXPLAIN_LINES = 33
+EXPLAIN_LINES = 28
 
 
 def explain() -> str:
