@@ -53,6 +53,7 @@ class Trail:
     engines: tuple[EngineCell, ...]
     entries: tuple[Deviation, ...]               # every entry any engine's status names
     statements: tuple[ListingLine, ...]          # where the listings compute or write the cell
+    assumptions: str = ""                        # the model assumptions its corrected engine keeps, said
 
 
 def printed_digits(text: str) -> int:
@@ -116,7 +117,8 @@ def cell_trail(scene: TableScene, row: str, column: str, diff: pd.DataFrame,
     statements = [line for statement in scene.statements(key, column) for line in listing_lines.find(statement)]
     return Trail(scene, key, column, str(first["published_text"]), float(first["published"]),
                  float(first["half_unit"]), published_source(scene.table), tuple(engines),
-                 tuple(register[i] for i in dict.fromkeys(ids) if i in register), tuple(statements))
+                 tuple(register[i] for i in dict.fromkeys(ids) if i in register), tuple(statements),
+                 register_mod.assumptions_said(scene.name, register))
 
 
 def read_diff(scene: TableScene, out_dir: Path | None) -> pd.DataFrame:
@@ -147,6 +149,8 @@ def as_text(trail: Trail, edits_shown: int = 6, width: int = 100) -> str:
         ids = f"  ({' '.join(e.register_ids)})" if e.register_ids else ""
         diff = "" if math.isnan(e.value) else f"{e.difference:.3g}"
         out.append(f"  {e.engine:15s} {_number(e.value):>16s} {diff:>13s} {_digits(e.digits):>6s}  {e.counts_as}{ids}")
+    if trail.assumptions:
+        out += ["", textwrap.fill(trail.assumptions, width, break_on_hyphens=False)]
     out += ["", "listing lines behind the cell:"]
     out += [f"  {line.where()}\n      {line.text.strip()}" for line in trail.statements] or ["  (none named)"]
     for entry in trail.entries:
