@@ -143,9 +143,10 @@ def diff_scene(scene: TableScene, published: PublishedTable, results: dict[str, 
 
 #: what a cell counts as (``classify_cells``, ``count_cells``); in words with a space for the hyphen
 CLASSES = ("matched", "explained", "within-tolerance", "unresolved", "unexplained", "not-produced")
-#: the kinds an explained cell is counted under: every kind but ``unresolved``, and SEVERAL
+#: the kinds an explained cell is counted under: every kind but ``unresolved`` and
+#: ``model-assumption`` (which claims no cell), and SEVERAL
 SEVERAL = "several kinds"
-EXPLAINED_BY = tuple(k for k in KINDS if k != "unresolved") + (SEVERAL,)
+EXPLAINED_BY = tuple(k for k in KINDS if k not in ("unresolved", "model-assumption")) + (SEVERAL,)
 #: the columns of ``count_cells``: the total, then the classes with ``explained`` split by kind
 COUNT_COLUMNS = ("cells", "matched", "explained", *EXPLAINED_BY, *CLASSES[2:])
 

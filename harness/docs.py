@@ -13,6 +13,8 @@ if a page differs from what it would write, and say where).  The blocks:
   explained (by kind) / within tolerance / unresolved / unexplained / not produced
   (``diff.count_cells``, every table scene's engines run now);
 - ``explain``: ``linkrepro explain ali1977-table1 160 src_dx`` as it prints (its first lines);
+- ``model assumptions NAME ...``: the register's model assumptions (kind ``model-assumption``)
+  whose ``scenes`` hold a scene NAME, or a scene of the thesis NAME, with their effect;
 - a thesis's own blocks (``BLOCKS`` of its ``harness/scenes/<thesis>/docs.py``, found through
   the registry): ``differential``, the CSSP's fixed sample of the port against legacy.
 
@@ -88,8 +90,25 @@ def explain() -> str:
     return f"```console\n$ linkrepro {' '.join(EXPLAIN)}\n{shown}\n```\n"
 
 
+def model_assumptions(names: list[str]) -> str:
+    """A markdown list: the register's model assumptions that a scene of ``names`` keeps (a name is a
+    scene or a thesis, every scene ``thesis-...``), each with those scenes and its measured effect."""
+    def named(scene: str) -> bool:
+        return any(scene == name or scene.startswith(name + "-") for name in names)
+    lines = []
+    for _, entry in sorted(register_mod.load().items()):
+        scenes = [f"`{scene}`" for scene in entry.scenes if named(scene)]
+        if scenes:
+            lines.append(f"- **{entry.id}** {entry.title} ({', '.join(scenes)}). {entry.effect}")
+    if not lines:
+        raise KeyError(f"no model assumption of the register names a scene of {names}")
+    return "\n".join(lines) + "\n"
+
+
 def block(name: str) -> str:
     """The text of the block ``name``."""
+    if name.startswith("model assumptions "):
+        return model_assumptions(name.removeprefix("model assumptions ").split())
     if name == "results summary":
         return results(engines=("legacy",))
     if name.startswith("results "):

@@ -29,7 +29,7 @@ from . import figures as figures_mod, listing_lines, manifest, register as regis
 from .diff import CLASSES, COUNT_COLUMNS, EXPLAINED_BY, classify_cells, headline
 from .engines import ENGINES
 from .register import Deviation
-from .report import heading
+from .report import ASSUMPTIONS_WORDS, heading
 from .scenes import SCENES, TABLES
 from .trail import digits_reproduced, printed_digits, published_source, read_diff
 
@@ -163,9 +163,11 @@ def figures(folder: Path) -> list[dict]:
 
 def _scene_view(folder: "Folder", section: "SceneSection", register, blocks, cells, labels) -> dict:
     view = {"kind": "scene", "name": section.name, "title": section.title, "problem": section.problem,
-            "outcome": section.outcome, "figures": [], "table": None, "overview": "", "counts": []}
+            "outcome": section.outcome, "figures": [], "table": None, "overview": "", "counts": [], "assumptions": []}
     if section.outcome is None:
         return view
+    view["assumptions"] = [{"id": e.id, "title": e.title, "effect": e.effect}
+                           for e in register_mod.assumed_by(section.name, register)]
     here = folder.out_dir / section.name
     view["figures"] = figures(here) if here.is_dir() else []
     if section.name in TABLES and (here / "diff.csv").is_file():
@@ -218,7 +220,7 @@ def render(folder: "Folder", latest: str = "") -> str:
         sections=sections, absent=folder.absent, absent_command=folder.absent_command, latest=latest,
         notes=folder.notes, engines=ENGINES,
         statuses=CELL_STATUSES, columns=[(c, heading(c)) for c in COUNT_COLUMNS if c not in EXPLAINED_BY or c in kinds],
-        kinds=kinds, total=headline(totals, by_kind=True),
+        kinds=kinds, total=headline(totals, by_kind=True), assumptions_words=ASSUMPTIONS_WORDS,
         made=(manifest.TITLE, markdown_html("\n".join(manifest.summary(folder.out_dir)))),
         entries=[_entry(register[i]) for i in sorted(used) if i in register],
         blocks={block: {"notes": notes, "lines": [_line(line) for line in lines]}

@@ -29,7 +29,11 @@ from functools import lru_cache
 from pathlib import Path
 
 REGISTER_PATH = Path(__file__).resolve().parent / "deviations.toml"
-KINDS = ("ocr", "original-bug", "portability", "published-misprint", "published-rounding", "unresolved")
+KINDS = ("ocr", "original-bug", "portability", "published-misprint", "published-rounding", "unresolved",
+         "model-assumption")
+#: a modelling choice of a thesis that the corrected engines keep (not a bug): it claims no cell
+#: and switches no quirk; its ``scenes`` are those whose corrected results still assume it
+MODEL_ASSUMPTION = "model-assumption"
 #: how an entry knows what it says (``basis``), and what each means
 BASES = {"measured": "a run shows it (a scene, a check, a test or a command computes the effect or the cause)",
          "inferred": "from the published table's fit, neighbouring rows or a reconstruction of a lost page; "
@@ -96,6 +100,7 @@ class Deviation:
     moves: dict = field(default_factory=dict)     # scene -> columns the quirk moves
     readings: tuple = ()                          # {file, chosen, scan}: the scan's text put back
     checks: tuple = ()                            # Check items: quoted figures and how to re-measure them
+    scenes: tuple = ()                            # a model assumption's scenes (their corrected results assume it)
 
     @property
     def text(self) -> str:
@@ -159,6 +164,23 @@ def _how_known(raw: dict) -> dict:
     return {"basis": basis, "settles": settles, "tolerance": tolerance}
 
 
+def _check_assumption(raw: dict) -> None:
+    """``scenes`` for a model assumption, and only for one: a list of scene names; a model
+    assumption claims no cells, switches no quirk and explains nothing within a tolerance."""
+    name, scenes, assumed = raw["id"], raw.get("scenes"), raw["kind"] == MODEL_ASSUMPTION
+    if not assumed and scenes is not None:
+        raise ValueError(f"register entry {name}: `scenes` is for a {MODEL_ASSUMPTION} only (kind {raw['kind']!r})")
+    if not assumed:
+        return
+    if not (isinstance(scenes, list) and scenes and all(isinstance(s, str) and s.strip() for s in scenes)):
+        raise ValueError(f"register entry {name}: a {MODEL_ASSUMPTION} needs `scenes`, the names of the scenes "
+                         f"whose corrected results assume it, not {scenes!r}")
+    extra = [key for key in ("cells", "quirk", "moves", "tolerance") if raw.get(key) is not None]
+    if extra:
+        raise ValueError(f"register entry {name}: a {MODEL_ASSUMPTION} claims no cells and switches no quirk, "
+                         f"but gives {', '.join(extra)}")
+
+
 def _check_whole(entry: Deviation) -> None:
     """A claim that an entry accounts for cells' whole difference needs an entry that explains
     by a cause (not unresolved, not a tolerance) and a check that re-measures it."""
@@ -195,15 +217,29 @@ def load(path: Path = REGISTER_PATH) -> dict[str, Deviation]:
             raise ValueError(f"register entry {raw['id']}: kind {raw['kind']!r} not in {KINDS}")
         if raw["id"] in entries:
             raise ValueError(f"register id {raw['id']} appears twice")
+        _check_assumption(raw)
         entry = Deviation(
             id=raw["id"], kind=raw["kind"], title=raw["title"], where=raw["where"],
             printed=raw["printed"], meant=raw["meant"], evidence=raw["evidence"],
             effect=raw["effect"], quirk=raw.get("quirk"), certainty=raw.get("certainty"), **_how_known(raw),
             cells=_cells(raw), moves=dict(raw.get("moves", {})), readings=tuple(raw.get("reading", [])),
-            checks=tuple(_check(raw["id"], c) for c in raw.get("check", [])))
+            checks=tuple(_check(raw["id"], c) for c in raw.get("check", [])), scenes=tuple(raw.get("scenes", ())))
         _check_whole(entry)
         entries[raw["id"]] = entry
     return entries
+
+
+def assumed_by(scene: str, entries: dict[str, Deviation]) -> list[Deviation]:
+    """The model assumptions (kind MODEL_ASSUMPTION) whose ``scenes`` name ``scene``: the thesis's
+    modelling choices its corrected results keep, by id."""
+    return [entry for _, entry in sorted(entries.items()) if scene in entry.scenes]
+
+
+def assumptions_said(scene: str, entries: dict[str, Deviation]) -> str:
+    """One sentence naming the model assumptions ``scene``'s corrected engine keeps ("" where none)."""
+    kept = "; ".join(f"{entry.id} {entry.title}" for entry in assumed_by(scene, entries))
+    return (f"The corrected engine (port_corrected) keeps the thesis's model (register kind `model-assumption`, "
+            f"not bugs): {kept}.") if kept else ""
 
 
 def by_quirk(entries: dict[str, Deviation]) -> dict[str, Deviation]:

@@ -13,7 +13,7 @@ from matplotlib.figure import Figure
 
 from .diff import EXPLAINED_BY, classify_cells, column_max, count_cells
 from .figures import ENGINE_STYLE, MAX_WIDTH_IN, RC, new_figure, save
-from .register import Deviation
+from .register import Deviation, assumed_by
 
 
 def markdown_table(frame: pd.DataFrame, floatfmt: str = "{:.3g}") -> str:
@@ -223,6 +223,20 @@ COUNTS_WORDS = ("A cell is *matched* when it is within half a unit of the printe
                 "`registered` covers the explained, within-tolerance and unresolved cells.")
 
 
+ASSUMPTIONS_WORDS = ("'Corrected' means the listings' bugs removed within the thesis's model: the corrected engine "
+                     "keeps the thesis's modelling choices below (register kind `model-assumption`, not bugs), each "
+                     "with the effect an alternative was measured to have.")
+
+
+def assumptions_markdown(scene: str, register: dict[str, Deviation]) -> list[str]:
+    """The section on what the corrected engine of ``scene`` still assumes (no lines where nothing)."""
+    found = assumed_by(scene, register)
+    if not found:
+        return []
+    return (["## What the corrected engine still assumes", "", ASSUMPTIONS_WORDS, ""]
+            + [f"- **{entry.id}** {entry.title}. {entry.effect}" for entry in found] + [""])
+
+
 def render_entry(entry: Deviation) -> str:
     lines = [f"#### {entry.id} ({entry.kind}{', ' + entry.certainty if entry.certainty else ''}): {entry.title}",
              *(f"- {name}: {text}" for name, text in entry.how_known()),
@@ -244,6 +258,7 @@ def scene_report(scene, diff: pd.DataFrame, timings: dict[str, float], register:
     out += ["", "## Cells against the published table",
             "", COUNTS_WORDS + " Kinds that explain no cell of this table are left out.", "",
             markdown_table(counts_table(counts), "{}"), "",
+            *assumptions_markdown(scene.name, register),
             "## Largest |engine - published| per column (over produced cells)", "",
             markdown_table(column_max(diff, "abs_diff")), "",
             "## Largest |engine - legacy| per column", "",

@@ -22,7 +22,7 @@ from pathlib import Path
 
 import pandas as pd
 
-from . import manifest, run_folder
+from . import manifest, register as register_mod, run_folder
 from .diff import headline, total_counts
 from .report import COUNTS_WORDS
 from .scene import Outcome
@@ -135,12 +135,13 @@ def collect(out_dir: Path) -> Folder:
     return Folder(out_dir, sections + [_differential(out_dir), _bench(out_dir)], absent, _notes(out_dir))
 
 
-def _scene_lines(section: SceneSection) -> list[str]:
+def _scene_lines(section: SceneSection, register: dict) -> list[str]:
     if section.outcome is None:
         return [f"## {section.name}", "", section.title, "", f"**{section.problem}**", ""]
     o = section.outcome
+    said = register_mod.assumptions_said(o.scene, register)
     lines = [f"## [{o.scene}]({o.scene}/report.md)", "", o.title, "", *o.overview, "",
-             f"Run {o.finished}, wall time {o.seconds:.2f} s.", ""]
+             *([said, ""] if said else []), f"Run {o.finished}, wall time {o.seconds:.2f} s.", ""]
     skipped = [f"**Skipped: {o.skipped}**", ""] if o.skipped else []
     return lines + skipped + [f"**{failure}**\n" for failure in o.failures]
 
@@ -161,8 +162,10 @@ def markdown(folder: Folder, latest: str = "") -> str:
     if latest:
         lines += [latest, ""]
     lines += [f"**{note}**\n" for note in folder.notes]
+    register = register_mod.load()
     for section in folder.sections:
-        lines += _scene_lines(section) if isinstance(section, SceneSection) else _output_lines(section, folder.out_dir)
+        lines += (_scene_lines(section, register) if isinstance(section, SceneSection)
+                  else _output_lines(section, folder.out_dir))
     failures = [f"{o.scene}: {f}" for o in folder.outcomes for f in o.failures]
     if failures:
         lines += ["## Failures", "", *[f"- **{failure}**" for failure in failures], ""]

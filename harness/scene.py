@@ -131,4 +131,15 @@ class ReportScene:
                            failures=[f"not written, engine printed failed: {exc}"])
         except SceneSkipped as exc:
             return Outcome(self.name, self.title, [], time.perf_counter() - begin, skipped=str(exc))
+        _state_assumptions(Path(out_dir) / self.name / "report.md", self.name)
         return Outcome(self.name, self.title, self.overview(result), time.perf_counter() - begin)
+
+
+def _state_assumptions(report: Path, scene: str) -> None:
+    """The model assumptions the register names for ``scene`` (``report.assumptions_markdown``)
+    added to the report.md its ``produce`` wrote (none written: nothing added)."""
+    from . import register
+    from .report import assumptions_markdown
+    lines = assumptions_markdown(scene, register.load())
+    if lines and report.is_file():
+        report.write_text(report.read_text().rstrip("\n") + "\n\n" + "\n".join(lines))

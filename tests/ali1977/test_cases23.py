@@ -221,6 +221,19 @@ def test_cases23_typed_errors_from_both_engines(legacy_func, port_func):
         port_func(density=float("nan"))
 
 
+def test_case2_lumped_takes_the_corrected_loads_only():
+    """D185: ``lumped="full"`` completes the corrected joint loads; with a listing's load quirk on,
+    or another value, it is refused by name."""
+    with pytest.raises(ValueError, match="coupler_load_in_f7"):
+        case2_source(DEG[:3], lumped="full")
+    with pytest.raises(ValueError, match="cognate_joint_load_signs"):
+        case2_cognate(DEG[:3], quirks=CORRECTED.only("cognate_joint_load_signs", True), lumped="full")
+    with pytest.raises(ValueError, match="lumped"):
+        case2_source(DEG[:3], quirks=CORRECTED, lumped="radial")
+    with pytest.raises(TypeError, match="lumped"):
+        case2_cognate(DEG[:3], quirks=CORRECTED, lumped=None)
+
+
 def test_legacy_case3_needs_room_for_its_five_nodes():
     with pytest.raises(ValueError, match="nodes"):
         ali1977.case3_source(l2=8.0)

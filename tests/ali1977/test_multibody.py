@@ -125,6 +125,19 @@ def test_the_port_s_case2_as_it_is(exudyn_eb, side):
     assert largest(exudyn_eb[2, side], port) < TOLERANCE * peak(port)
 
 
+@pytest.mark.parametrize("side", mb.SIDES)
+def test_case2_with_the_masses_whole_inertia_forces(side):
+    """D185: the thesis's Case II keeps only the coupler's and the follower's inertia loads along
+    their links; the port's ``lumped="full"`` (two system forces and their beta2 columns added,
+    ``case2.transverse``) against Exudyn's frozen structure loaded with the masses' whole
+    d'Alembert forces; the thesis's axial loads are far from it (the choice matters)."""
+    port = mb.port_deflections(side, 2, ANGLES, lumped="full")
+    got = mb.quasi_static(side, 2, ANGLES, qs.EB_ELEMENTS, shear_per_element=qs.EB_KAPPA, lumped="full")
+    assert largest(got, port) < TOLERANCE * peak(port)
+    assert np.abs(got["rot"] - port["rot"]).max() < TOLERANCE * peak(port) / mb.rigid(side, [0.0]).lengths[1]
+    assert largest(got, reference(2, side)) > 0.3 * peak(reference(2, side))
+
+
 def test_the_solve_is_linear_and_the_nonlinear_solve_is_not():
     """Scaled back, the linear answer does not depend on the load factor; Exudyn's nonlinear
     static solve differs from it in proportion to the load (geometric nonlinearity)."""

@@ -111,8 +111,8 @@ def test_every_view_of_an_entry_shows_its_basis_and_tolerance(tmp_path):
     assert fields["basis"].startswith("inferred: ") and fields["settles"] == "the lost page found"
     assert "within 1e-06 relative" in fields["tolerance"]
     shown = SimpleNamespace(scene=SimpleNamespace(name="s", key_name="k", title="T"), row="1", column="c",
-                            published_text="1.0", half_unit=0.05, source="seed", engines=(), statements=(), notes=(),
-                            entries=(entry,))
+                            published_text="1.0", half_unit=0.05, source="seed", engines=(), statements=(),
+                            entries=(entry,), notes=(), assumptions="")
     text = " ".join(trail.as_text(shown).split())
     assert "basis: inferred: from the published table's fit" in text and "settles: the lost page found" in text
 
@@ -149,3 +149,57 @@ def test_the_register_page_says_every_basis_and_class():
         assert f"`{basis}`" in page, basis
     for name in CLASSES:
         assert f"*{words(name)}*" in page, name
+
+
+@pytest.mark.parametrize("kind, more, after, words_", [
+    ("model-assumption", "", "", "needs `scenes`"),
+    ("model-assumption", "scenes = []", "", "needs `scenes`"),
+    ("model-assumption", 'scenes = "ali1977-table1"', "", "needs `scenes`"),
+    ("model-assumption", 'scenes = ["s", ""]', "", "needs `scenes`"),
+    ("model-assumption", 'scenes = ["s"]\nquirk = "q"', "", "switches no quirk, but gives quirk"),
+    ("model-assumption", 'scenes = ["s"]\ntolerance = 1e-6', "", "but gives tolerance"),
+    ("model-assumption", 'scenes = ["s"]', WHOLE.format(whole="false"), "but gives cells"),
+    ("original-bug", 'scenes = ["s"]', "", "`scenes` is for a model-assumption only"),
+])
+def test_a_malformed_model_assumption_is_a_clear_error(tmp_path, kind, more, after, words_):
+    with pytest.raises(ValueError, match=f"D900.*{words_}"):
+        _register(tmp_path, more, kind=kind, after=after)
+
+
+def test_a_model_assumption_is_said_for_its_scenes_only(tmp_path):
+    register = _register(tmp_path, 'basis = "measured"\nscenes = ["s", "t"]', kind="model-assumption")
+    assert register["D900"].scenes == ("s", "t")
+    assert [e.id for e in register_mod.assumed_by("t", register)] == ["D900"]
+    assert register_mod.assumed_by("u", register) == [] and register_mod.assumptions_said("u", register) == ""
+    assert "model-assumption" in register_mod.assumptions_said("s", register)
+    assert "D900 t." in register_mod.assumptions_said("s", register)          # its id and title
+
+
+def test_the_register_s_model_assumptions_name_scenes_and_measure_their_effect():
+    """Case II's axial lumping, Case I's massless links, the CSSP's crank pin, K.E.D.'s quasi-static
+    linear method: each names scenes that exist, claims no cell and has a check of its effect."""
+    from linkrepro.harness.scenes import SCENES
+    found = [e for e in register_mod.load().values() if e.kind == register_mod.MODEL_ASSUMPTION]
+    assert {"D185", "D186", "D187", "D188"} <= {e.id for e in found}
+    for entry in found:
+        assert entry.scenes and set(entry.scenes) <= set(SCENES), entry.id
+        assert entry.basis == "measured" and entry.checks and not entry.cells and entry.quirk is None, entry.id
+
+
+def test_a_report_scene_s_report_states_its_model_assumptions(tmp_path, monkeypatch):
+    """A scene without a published table: the section is added to the report.md it wrote, where
+    the register names it; nothing is added for a scene no model assumption names."""
+    from linkrepro.harness.scene import ReportScene
+    register = _register(tmp_path, 'basis = "measured"\nscenes = ["s"]', kind="model-assumption")
+    monkeypatch.setattr(register_mod, "load", lambda *args: register)
+
+    def produce(name):
+        def write(out: Path):
+            (out / name).mkdir(parents=True)
+            (out / name / "report.md").write_text(f"# {name}\n")
+        return write
+    for name in ("s", "u"):
+        ReportScene(name, name.upper(), "g", 0, produce(name), lambda result: []).write(tmp_path / "out", None)
+    said = (tmp_path / "out" / "s" / "report.md").read_text()
+    assert said.startswith("# s\n\n## What the corrected engine still assumes") and "- **D900** t. f" in said
+    assert (tmp_path / "out" / "u" / "report.md").read_text() == "# u\n"

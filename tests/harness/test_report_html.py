@@ -19,6 +19,7 @@ from html.parser import HTMLParser
 from pathlib import Path
 
 import pytest
+from markupsafe import escape
 
 from linkrepro.harness import describe, register, report_folder
 from linkrepro.harness.bench_run import run_bench
@@ -87,6 +88,30 @@ def test_explain_prints_the_trail(run_dir):
     assert "published  -0.655" in out                                # harness/published, as printed
     for engine in ("printed", "legacy", "port_printed", "port_corrected"):
         assert re.search(rf"^\s+{engine}\s", out, re.M)
+    kept = assumed(SCENE)                                             # the model assumptions, named
+    assert kept and all(f"{e.id} {e.title}" in " ".join(out.split()) for e in kept)
+
+
+def assumed(scene: str) -> list:
+    """The register's model assumptions whose scenes name ``scene`` (read from the TOML)."""
+    return [e for e in register.load().values() if e.kind == "model-assumption" and scene in e.scenes]
+
+
+def test_each_scene_states_the_model_assumptions_its_corrected_engine_keeps(run_dir):
+    """In the scene's report.md (with their effect), its section of the folder's report.md and of
+    report.html; a scene that none names says none."""
+    folder, page = (run_dir / "report.md").read_text(), (run_dir / "report.html").read_text()
+    assert assumed(SCENE) and assumed(OTHERS[0]) and not assumed(OTHERS[1])
+    for name in (SCENE, *OTHERS):
+        own = (run_dir / name / "report.md").read_text()
+        section = folder.split(f"## [{name}]")[1].split("\n## ")[0]
+        html = page.split(f'<section id="{name}">')[1].split("</section>")[0]
+        assert ("What the corrected engine still assumes" in own) == bool(assumed(name)), name
+        assert ("model-assumption" in section) == ("still assumes" in html) == bool(assumed(name)), name
+        for e in assumed(name):
+            assert f"- **{e.id}** {e.title}. {e.effect}" in own
+            assert f"{e.id} {e.title}" in section
+            assert f"<strong>{e.id}</strong> {escape(e.title)}. {escape(e.effect)}" in html
 
 
 def test_explain_unknown_row_is_a_usage_error(run_dir):

@@ -42,7 +42,9 @@ Loads (frozen mode; the corrected port's, one physical force each, lbf):
   at P; the crank's -(m1/g) a_A at A; the follower's component along the follower,
   -(m4/g)(a_B . e4) e4, at B; the coupler's component along the coupler, -(m3/g)(a_A . e3) e3,
   at the crank pin A, where the thesis lumps it (``coupler_load_at``="B" puts it at B): the
-  thesis's eight system forces P1..P8 of eq. (30), components it drops dropped here too;
+  thesis's eight system forces P1..P8 of eq. (30), components it drops dropped here too, or with
+  ``lumped``="full" the follower's and the coupler's whole inertia forces, -(m4/g) a_B and
+  -(m3/g) a_A (the alternative to the thesis's choice that register entry D185 measures);
 - Case III: the extender's weight in n equal parts (``case3``: density * area * L2 / n) at
   L2, L2 - L2/n, ..., L2/n from A, each -(w/g) a at its node (``n_nodes``).
 
@@ -172,10 +174,11 @@ def rigid(side: str, deg) -> Rigid:
                  partial.om2, partial.om3, partial.lengths, turn, shift, link)
 
 
-def point_loads(rig: Rigid, case: int, n_nodes: int = CASE3_NODES, coupler_load_at: str = "A") -> dict:
+def point_loads(rig: Rigid, case: int, n_nodes: int = CASE3_NODES, coupler_load_at: str = "A",
+                lumped: str = "axial") -> dict:
     """The case's loads (the corrected port's, see the module's docstring) as physical forces:
     {where: (2, N) lbf, source frame}, where "P", "A", "B" or ("extender", r) for Case III's node
-    r inches from A."""
+    r inches from A; ``lumped`` (Case II): "axial" or "full" (``case2.LUMPED``)."""
     g = GRAVITY_IN
     if case == 1:
         return {"P": -(EXAMPLE.mass_lbf / g) * rig.acc_p}
@@ -184,7 +187,11 @@ def point_loads(rig: Rigid, case: int, n_nodes: int = CASE3_NODES, coupler_load_
         m1, m2, m3, m4 = (_case2.DENSITY * (EXAMPLE.section.area * length) / g for length in (l1, l2, l3, l4))
         e3 = (rig.b - rig.a) / l3
         e4 = (rig.o4 - rig.b) / l4
-        along = lambda acc, e: np.sum(acc * e, axis=0) * e       # noqa: E731  the component along e
+        if lumped not in _case2.LUMPED:
+            raise ValueError(f"lumped must be one of {_case2.LUMPED}, got {lumped!r}")
+
+        def along(acc, e):        # the component along e (the thesis's), or the whole vector
+            return acc if lumped == "full" else np.sum(acc * e, axis=0) * e
         loads = {"P": -m2 * rig.acc_p, "A": -m1 * rig.acc_a, "B": -m4 * along(rig.acc_b, e4)}
         coupler = -m3 * along(rig.acc_a, e3)
         if coupler_load_at not in ("A", "B"):
@@ -200,14 +207,16 @@ def point_loads(rig: Rigid, case: int, n_nodes: int = CASE3_NODES, coupler_load_
     raise ValueError(f"case must be one of {CASES}, got {case!r}")
 
 
-def port_deflections(side: str, case: int, deg, n_nodes: int = CASE3_NODES, quirks=CORRECTED) -> dict:
+def port_deflections(side: str, case: int, deg, n_nodes: int = CASE3_NODES, quirks=CORRECTED,
+                     lumped: str = "axial") -> dict:
     """The port's path-point deflections: ``dx``, ``dy`` (in, source frame), ``rot`` (rad) over
-    ``deg`` (deg), with ``quirks`` (CORRECTED by default) and the example's data."""
+    ``deg`` (deg), with ``quirks`` (CORRECTED by default) and the example's data; ``lumped``
+    Case II's (``case2.LUMPED``)."""
     deg = np.atleast_1d(np.asarray(deg, dtype=float))
     calls = {(1, "source"): lambda: source_case1(deg, mass_lbf=EXAMPLE.mass_lbf, quirks=quirks),
              (1, "cognate"): lambda: cognate_case1(deg, mass_lbf=EXAMPLE.mass_lbf, quirks=quirks),
-             (2, "source"): lambda: _case2.case2_source(deg, quirks=quirks),
-             (2, "cognate"): lambda: _case2.case2_cognate(deg, quirks=quirks),
+             (2, "source"): lambda: _case2.case2_source(deg, quirks=quirks, lumped=lumped),
+             (2, "cognate"): lambda: _case2.case2_cognate(deg, quirks=quirks, lumped=lumped),
              (3, "source"): lambda: _case3.case3_source(deg, n_nodes, quirks=quirks),
              (3, "cognate"): lambda: _case3.case3_cognate(deg, n_nodes, quirks=quirks)}
     if (case, side) not in calls:
@@ -373,7 +382,7 @@ def crank_angle(rig: Rigid, t: float, deg0: float) -> float:
 def build(side: str, deg: float, case: int = 1, elements: int = 8, *, mode: str = "frozen",
           n_nodes: int = CASE3_NODES, masses: str = "lumped", shear_factor: float = SHEAR_FACTOR,
           coupler_load_at: str = "A", loads: bool | None = None, load_scale: float = 1.0,
-          shear_per_element: float | None = None) -> Model:
+          shear_per_element: float | None = None, lumped: str = "axial") -> Model:
     """The flexible linkage of ``side`` at the crank angle ``deg`` (deg) with ``elements`` beam
     elements per link (Case III: the extender's the least common multiple of ``elements`` and
     ``n_nodes``, so that its nodes carry the loads and doubling ``elements`` halves every element),
@@ -382,7 +391,8 @@ def build(side: str, deg: float, case: int = 1, elements: int = 8, *, mode: str 
     ``loads``), every load times ``load_scale``.  ``masses`` see the module's docstring.
     Shear stiffness: ``shear_factor`` * EA, or where ``shear_per_element`` (kappa) is given,
     kappa * 12 EI / h^2 for elements of length h (a shear flexibility that vanishes with h^2, as
-    the linear element's own error does: see the scene ``quasi_static``)."""
+    the linear element's own error does: see the scene ``quasi_static``).  ``lumped``: Case II's
+    loads (``point_loads``)."""
     exu = require()
     from exudyn.itemInterface import (CoordinateConstraint, LoadForceVector, MarkerNodeCoordinate, MarkerNodePosition,
                                       NodePointGround, NodeRigidBody2D, ObjectBeamGeometricallyExact2D,
@@ -394,7 +404,7 @@ def build(side: str, deg: float, case: int = 1, elements: int = 8, *, mode: str 
     if int(elements) != elements or elements < 1:
         raise ValueError(f"elements must be a positive integer, got {elements!r}")
     rig = rigid(side, [deg])
-    applied = point_loads(rig, case, n_nodes, coupler_load_at)          # checks case
+    applied = point_loads(rig, case, n_nodes, coupler_load_at, lumped)          # checks case
     sc = exu.SystemContainer()
     mbs = sc.AddSystem()
     sec = EXAMPLE.section
@@ -501,11 +511,11 @@ def _point_masses(rig: Rigid, case: int, n_nodes: int, where: dict, masses: str)
 
 def quasi_static(side: str, case: int, deg, elements: int = 8, n_nodes: int = CASE3_NODES,
                  shear_factor: float = SHEAR_FACTOR, coupler_load_at: str = "A",
-                 shear_per_element: float | None = None) -> dict:
+                 shear_per_element: float | None = None, lumped: str = "axial") -> dict:
     """Exudyn's linear quasi-static path-point deflections over ``deg`` (deg): ``dx``, ``dy`` (in,
     source frame), ``rot`` (rad), one frozen model per angle."""
     rows = np.array([build(side, float(d), case, elements, n_nodes=n_nodes, shear_factor=shear_factor,
                            coupler_load_at=coupler_load_at, masses="none",
-                           shear_per_element=shear_per_element).linear_deflection()
+                           shear_per_element=shear_per_element, lumped=lumped).linear_deflection()
                      for d in np.atleast_1d(deg)])
     return {"dx": rows[:, 0], "dy": rows[:, 1], "rot": rows[:, 2]}
