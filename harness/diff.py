@@ -81,7 +81,9 @@ def check_floor(scene: TableScene, register: dict[str, Deviation]) -> None:
 
 def diff_scene(scene: TableScene, published: PublishedTable, results: dict[str, pd.DataFrame],
                register: dict[str, Deviation]) -> pd.DataFrame:
-    """Long table: one row per (engine, published cell)."""
+    """Long table: one row per (engine, published cell).  A cell that misses the printed digit
+    is registered to the ids the scene's ``explained_by_run`` gives it (a run reaches the digit)
+    before any tolerance (``floor_id``) is asked."""
     pub_val, pub_text, half = published.values, published.text, published.half_unit
     legacy = results.get("legacy")
     effects = None
@@ -120,6 +122,9 @@ def diff_scene(scene: TableScene, published: PublishedTable, results: dict[str, 
                     status = "not-produced"
                 elif err <= tol * (1.0 + 1e-9):
                     status = "match"
+                elif run := scene.explained_by_run(key, col, engine):      # a run reaches the digit
+                    ids += run
+                    status = "registered"
                 elif scene.floor_id and err <= scene.rel_floor * abs(target):
                     ids.append(scene.floor_id)
                     status = "registered"

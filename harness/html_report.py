@@ -98,7 +98,8 @@ def table_view(scene, diff: pd.DataFrame, register: dict[str, Deviation], blocks
                labels: dict) -> dict:
     """The published table as printed (rows, columns in words and unit, what each cell counts
     as per engine: CELL_STATUSES, and the printed digits each engine reproduces) for the
-    template; each cell's trail data goes into ``cells`` and its listing lines into ``blocks``."""
+    template; each cell's trail data goes into ``cells`` and its listing lines and the scene's
+    ``trail_notes`` into ``blocks``."""
     key = scene.key_name
     classes = classify_cells(diff, register)
     diff = diff.assign(shown=classes["count"].map(lambda c: SHOWN.get(c, c)), kind=classes["kind"])
@@ -126,7 +127,7 @@ def table_view(scene, diff: pd.DataFrame, register: dict[str, Deviation], blocks
                 engines[r["engine"]] = {k: v for k, v in record.items() if v is not None and v != "" and v != []}
             cell_id = f"{scene.name}|{row_key}|{column}"
             lines = tuple(line for s in scene.statements(str(first[key]), column) for line in listing_lines.find(s))
-            block = blocks.setdefault(lines, f"L{len(blocks)}")
+            block = blocks.setdefault((lines, tuple(scene.trail_notes(str(first[key]), column))), f"L{len(blocks)}")
             cells[cell_id] = {"scene": scene.name, "row": row_key, "column": column,
                               "label": labels.setdefault(scene.describe(column).label, len(labels)), "published": text,
                               "half_unit": float(first["half_unit"]), "printed_digits": printed,
@@ -222,6 +223,7 @@ def render(folder: "Folder", latest: str = "") -> str:
         kinds=kinds, total=headline(totals, by_kind=True), assumptions_words=ASSUMPTIONS_WORDS,
         made=(manifest.TITLE, markdown_html("\n".join(manifest.summary(folder.out_dir)))),
         entries=[_entry(register[i]) for i in sorted(used) if i in register],
-        blocks={block: [_line(line) for line in lines] for lines, block in blocks.items()},
+        blocks={block: {"notes": notes, "lines": [_line(line) for line in lines]}
+                for (lines, notes), block in blocks.items()},
         cells_json=json.dumps(cells, separators=(",", ":")).replace("</", "<\\/"),
         labels_json=json.dumps(list(labels), separators=(",", ":")).replace("</", "<\\/"))

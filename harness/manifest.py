@@ -48,7 +48,7 @@ with what a run ran, from ``version`` to ``inputs_sha256``):
 - ``command``: its command line, e.g. "linkrepro reproduce --out out"
 - ``scenes``: the sections it wrote: the scenes (reproduce) or the command's name
 - ``inputs``: {path: SHA-256} of every input: ``INPUTS`` (legacy/printed/*, legacy/src/*,
-  harness/published/*, harness/deviations.toml), paths relative to the package's root (an
+  legacy/fixed_form.py, harness/published/*, harness/deviations.toml), paths relative to the package's root (an
   installed package holds the listings and tables it installs)
 - ``outputs``: {path: SHA-256} of every CSV in the folder, at any depth, when it was written
 - ``sections``: {name: {"folder", "started", "command", "differs"}}: every section of the folder
@@ -85,7 +85,7 @@ TITLE = "How this run was made"
 #: the package's root: the source tree (a checkout) or the installed package's folder
 ROOT = Path(__file__).resolve().parent.parent
 #: the inputs hashed: folders (every file in them) and files, relative to ROOT
-INPUTS = ("legacy/printed", "legacy/src", "harness/published", "harness/deviations.toml")
+INPUTS = ("legacy/printed", "legacy/src", "legacy/fixed_form.py", "harness/published", "harness/deviations.toml")
 #: the libraries whose versions are recorded, by their distribution's name
 LIBRARIES = ("numpy", "scipy", "numba", "pandas", "matplotlib", "exudyn")
 NOT_INSTALLED = "not installed"

@@ -48,6 +48,13 @@ class TableScene:
     #: the thesis's reading driver (``harness/readings.py``): rebuilds its listings with the
     #: scan's literal text; None: no reading of the register is counted on this table
     readings: Any = None
+    #: register ids that a run shows to explain a cell missing the printed digit: (row key as the
+    #: diff holds it, column, engine) -> ids (e.g. another arithmetic of the time reaches the digit);
+    #: the cell is then explained by them, not by ``floor_id``'s tolerance
+    explained_by_run: Callable[[Any, str, str], tuple[str, ...]] = lambda row, column, engine: ()
+    #: what a cell's trail says beside the engines: (row key, column) -> sentences (e.g. which
+    #: arithmetics reach the printed digit); ``linkrepro explain`` and report.html show them
+    trail_notes: Callable[[Any, str], tuple[str, ...]] = lambda row, column: ()
 
     @property
     def keys(self) -> tuple[str, ...]:

@@ -53,6 +53,7 @@ class Trail:
     engines: tuple[EngineCell, ...]
     entries: tuple[Deviation, ...]               # every entry any engine's status names
     statements: tuple[ListingLine, ...]          # where the listings compute or write the cell
+    notes: tuple[str, ...] = ()                  # the scene's ``trail_notes`` (e.g. which arithmetics reach it)
     assumptions: str = ""                        # the model assumptions its corrected engine keeps, said
 
 
@@ -118,7 +119,8 @@ def cell_trail(scene: TableScene, row: str, column: str, diff: pd.DataFrame,
     return Trail(scene, key, column, str(first["published_text"]), float(first["published"]),
                  float(first["half_unit"]), published_source(scene.table), tuple(engines),
                  tuple(register[i] for i in dict.fromkeys(ids) if i in register), tuple(statements),
-                 register_mod.assumptions_said(scene.name, register))
+                 notes=tuple(scene.trail_notes(key, column)),
+                 assumptions=register_mod.assumptions_said(scene.name, register))
 
 
 def read_diff(scene: TableScene, out_dir: Path | None) -> pd.DataFrame:
@@ -149,6 +151,8 @@ def as_text(trail: Trail, edits_shown: int = 6, width: int = 100) -> str:
         ids = f"  ({' '.join(e.register_ids)})" if e.register_ids else ""
         diff = "" if math.isnan(e.value) else f"{e.difference:.3g}"
         out.append(f"  {e.engine:15s} {_number(e.value):>16s} {diff:>13s} {_digits(e.digits):>6s}  {e.counts_as}{ids}")
+    for note in trail.notes:
+        out += [""] + textwrap.wrap(note, width, break_on_hyphens=False)
     if trail.assumptions:
         out += ["", textwrap.fill(trail.assumptions, width, break_on_hyphens=False)]
     out += ["", "listing lines behind the cell:"]

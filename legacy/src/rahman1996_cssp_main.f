@@ -164,21 +164,21 @@ C Mass properties of the original links
       M2=7.6/G
       M3=6.0/G
 C Radii of gyration about C.G. & about distal coordinate frame
-      K1XCG=0.2041241
-      K1YCG=0.595119
-      K1ZCG=0.595119
-      K1X=0.2041241
-      K1Y=1.1636867
-      K1Z=1.1636867
-      K2XCG=0.2041241
-      K2YCG=2.3139072
-      K2ZCG=2.3139072
-      K2X=0.2041241
-      K2Y=4.6210569
-      K2Z=4.6210569
-      K3X=0.5204165
-      K3Y=0.5204165
-      K3Z=0.7071067
+      K1XCG=0.2041241D0                                                 ! D180
+      K1YCG=0.595119D0                                                  ! D180
+      K1ZCG=0.595119D0                                                  ! D180
+      K1X=0.2041241D0                                                   ! D180
+      K1Y=1.1636867D0                                                   ! D180
+      K1Z=1.1636867D0                                                   ! D180
+      K2XCG=0.2041241D0                                                 ! D180
+      K2YCG=2.3139072D0                                                 ! D180
+      K2ZCG=2.3139072D0                                                 ! D180
+      K2X=0.2041241D0                                                   ! D180
+      K2Y=4.6210569D0                                                   ! D180
+      K2Z=4.6210569D0                                                   ! D180
+      K3X=0.5204165D0                                                   ! D180
+      K3Y=0.5204165D0                                                   ! D180
+      K3Z=0.7071067D0                                                   ! D180
 C Mass moment of inertia about C.G.
       I1X=M1*K1XCG**2
       I1Y=M1*K1YCG**2

@@ -3,8 +3,9 @@
 Units as printed: inch, lbf, second; masses lb*s^2/in, inertias lb*s^2*in; angles in
 degrees at the interface, radians inside.  ``Constants.of(inputs, real4)`` gives every
 number the listing computes with: with ``real4`` they are what its REAL*4 arguments,
-literals and single-precision expressions hold (S1 = 0.4 is 0.4000000059604645), without
-it they are the decimal values.
+literals and single-precision expressions hold (S1 = 0.4 is 0.4000000059604645) and its
+radii of gyration as the 1996 compiler read them (a literal assigned to a REAL*8 variable
+taken as double, register D180); without it they are the decimal values.
 """
 from __future__ import annotations
 
@@ -60,7 +61,8 @@ class Constants(LoopConstants):
         g = s(GRAVITY)
         # M1=1.9/G: a single-precision division in the listing
         masses = tuple(float(np.float32(s(w)) / np.float32(g)) if real4 else w / g for w in WEIGHTS)
-        crank_k, rod_k = [s(k) for k in RADII_CRANK], [s(k) for k in RADII_ROD]
+        # K1XCG=0.2041241 etc.: REAL*8 variables given their literals in double (D180), in both regimes
+        crank_k, rod_k = RADII_CRANK, RADII_ROD
         inertia_crank = tuple(masses[0] * k ** 2 for k in crank_k)
         inertia_rod = tuple(masses[1] * k ** 2 for k in rod_k)
         quarter = (masses[0] / 4.0, masses[1] / 4.0)
@@ -70,7 +72,7 @@ class Constants(LoopConstants):
         bl = s(BEARING_LENGTH)
         return cls(**vars(loop), masses=masses,
                    inertia_crank=inertia_crank, inertia_rod=inertia_rod,
-                   rod_radii_distal=tuple(s(k) for k in RADII_ROD_DISTAL), cg=CG_OFFSETS,
+                   rod_radii_distal=RADII_ROD_DISTAL, cg=CG_OFFSETS,
                    crank_arms=crank_arms, rod_arms=rod_arms, point_masses=point_masses,
                    bearing_length_sq=float(np.float32(bl) * np.float32(bl)) if real4 else bl * bl,
                    a1_sq=float(np.float32(inputs.a1) * np.float32(inputs.a1)) if real4 else inputs.a1 ** 2,

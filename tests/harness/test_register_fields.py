@@ -112,7 +112,7 @@ def test_every_view_of_an_entry_shows_its_basis_and_tolerance(tmp_path):
     assert "within 1e-06 relative" in fields["tolerance"]
     shown = SimpleNamespace(scene=SimpleNamespace(name="s", key_name="k", title="T"), row="1", column="c",
                             published_text="1.0", half_unit=0.05, source="seed", engines=(), statements=(),
-                            entries=(entry,), assumptions="")
+                            entries=(entry,), notes=(), assumptions="")
     text = " ".join(trail.as_text(shown).split())
     assert "basis: inferred: from the published table's fit" in text and "settles: the lost page found" in text
 

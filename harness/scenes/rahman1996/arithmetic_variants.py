@@ -9,6 +9,8 @@ from typing import Callable
 
 import numpy as np
 
+from ....legacy import fixed_form
+
 MAIN = "rahman1996_cssp_main.f"
 #: meson.build's fortran_legacy_args: the build of the legacy engine (a test holds them equal)
 REFERENCE_FLAGS = ("-std=legacy", "-fno-automatic", "-ffp-contract=off", "-fno-fast-math",
@@ -20,54 +22,7 @@ REFERENCE_FLAGS = ("-std=legacy", "-fno-automatic", "-ffp-contract=off", "-fno-f
 # text it expects is not there (the listing changed: the variant must be looked at again).
 
 _LITERAL = re.compile(r"(?<!\w)(\d+\.\d*|\.\d+|\d+(?=[EeDd][+-]?\d))([EeDd][+-]?\d+)?")
-_DECL = re.compile(r"^\s*(?:REAL\s*\*\s*8|DOUBLE\s+PRECISION)\s+(.*)$", re.IGNORECASE)
-_ASSIGN_LITERAL = re.compile(r"^(\s*)([A-Za-z]\w*)(\s*(?:\([^=]*\))?\s*=\s*[+-]?\s*)"
-                             r"(\d+\.\d*|\.\d+)([Ee][+-]?\d+)?(\s*)$")
-
-
-def _is_comment(line: str) -> bool:
-    return not line.strip() or line[0] in "Cc*!"
-
-
-def _split(line: str) -> tuple[str, str, str]:
-    """(columns 1-6, code of columns 7-72 before any '!' comment, the rest)."""
-    head, code = line[:6], line[6:72]
-    bang = _bang(code)
-    if bang >= 0:
-        return head, code[:bang], code[bang:] + line[72:]
-    return head, code, line[72:]
-
-
-def _bang(code: str) -> int:
-    """Where a '!' comment starts outside quotes, or -1."""
-    quote = None
-    for k, ch in enumerate(code):
-        if quote:
-            quote = None if ch == quote else quote
-        elif ch in "'\"":
-            quote = ch
-        elif ch == "!":
-            return k
-    return -1
-
-
-def _join(head: str, code: str, rest: str, original: str) -> str:
-    if len(head) + len(code.rstrip()) > 72:
-        raise ValueError(f"a promoted constant pushes code past column 72: {original.rstrip()!r}")
-    return head + code.rstrip().ljust(66) + rest if rest else head + code.rstrip()
-
-
-def _statements(lines: list[str]) -> list[list[int]]:
-    """Line indices of each statement (initial line and its continuations)."""
-    out: list[list[int]] = []
-    for k, line in enumerate(lines):
-        if _is_comment(line):
-            continue
-        if len(line) > 5 and line[5] not in " 0" and out:
-            out[-1].append(k)
-        else:
-            out.append([k])
-    return out
+_split, _join, _statements, _as_double = fixed_form.split, fixed_form.join, fixed_form.statements, fixed_form.as_double
 
 
 def _significant(mantissa: str) -> int:
@@ -81,12 +36,6 @@ def _standalone(match: re.Match) -> bool:
     if re.search(r"\w$", before) or re.match(r"\w|\.\d", after):
         return False
     return not before.endswith(".") or bool(re.search(r"\.[A-Za-z]+\.$", before))
-
-
-def _as_double(text: str, mantissa: str, exponent: str | None) -> str:
-    if exponent is None:
-        return mantissa + "D0"
-    return mantissa + "D" + exponent[1:] if exponent[0] in "Ee" else text
 
 
 def _promote(text: str, keep: Callable[[str, str | None, str], bool]) -> str:
@@ -124,11 +73,13 @@ def _exact_in_single(mantissa: str, exponent: str | None) -> bool:
 
 
 def long_constants_double(files: dict[str, str]) -> dict[str, str]:
-    """Literal constants of more than seven significant digits written as double."""
-    out = dict(files)
+    """Only the literal constants of more than seven significant digits written as double (the
+    others REAL*4: ``single_constants`` first)."""
+    single = single_constants(files)
+    out = dict(single)
     for name in (MAIN, "rahman1996_subroutines.f"):
-        out[name] = _promote(files[name], lambda m, e, s: _significant(m) <= 7)
-    if out == files:
+        out[name] = _promote(single[name], lambda m, e, s: _significant(m) <= 7)
+    if out == single:
         raise ValueError("no literal constant of more than seven significant digits found")
     return out
 
@@ -142,43 +93,39 @@ def all_constants_double(files: dict[str, str]) -> dict[str, str]:
     return out
 
 
-def _real8_names(text: str) -> set[str]:
-    lines = text.split("\n")
-    names: set[str] = set()
-    for stmt in _statements(lines):
-        whole = " ".join(_split(lines[k])[1] for k in stmt)
-        match = _DECL.match(whole)
-        if match:
-            flat = match.group(1)
-            while re.search(r"\([^()]*\)", flat):
-                flat = re.sub(r"\([^()]*\)", "", flat)
-            names |= {n.strip().upper() for n in flat.split(",") if re.fullmatch(r"\s*[A-Za-z]\w*\s*", n)}
-    return names
-
-
 def context_constants(files: dict[str, str]) -> dict[str, str]:
     """A literal constant assigned directly to a REAL*8 variable taken as double (what the
-    g77 manual calls context-sensitive constants: 'many other compilers' did it)."""
+    g77 manual calls context-sensitive constants, ``fixed_form.context_constants``): the
+    arithmetic D180 adopts, for the listing as printed."""
     out = dict(files)
     changed = 0
     for name in (MAIN, "rahman1996_subroutines.f"):
-        lines = files[name].split("\n")
-        real8 = _real8_names(files[name])
-        for k, line in enumerate(lines):
-            if _is_comment(line) or (len(line) > 5 and line[5] not in " 0"):
-                continue
-            head, code, rest = _split(line)
-            match = _ASSIGN_LITERAL.match(code)
-            if match and match.group(2).upper() in real8:
-                new = (match.group(1) + match.group(2) + match.group(3)
-                       + _as_double(match.group(4) + (match.group(5) or ""), match.group(4), match.group(5))
-                       + match.group(6))
-                lines[k] = _join(head, new, rest, line)
-                changed += 1
-        out[name] = "\n".join(lines)
+        out[name], n = fixed_form.context_constants(files[name])
+        changed += n
     if not changed:
         raise ValueError("no literal constant assigned to a REAL*8 variable found")
     return out
+
+
+#: the register entry whose tag marks legacy/src's constants written as double (D180)
+ADOPTED = "D180"
+_TAGGED_DOUBLE = re.compile(r"(?<![\w.])(\d+\.\d*|\.\d+)D0(?!\w)")
+
+
+def single_constants(files: dict[str, str]) -> dict[str, str]:
+    """The D180 edit undone: the literals of legacy/src's lines tagged D180 back in REAL*4, as the
+    standard reads a constant without a D exponent wherever it stands (g77 and gfortran)."""
+    lines = files[MAIN].split("\n")
+    changed = 0
+    for k, line in enumerate(lines):
+        head, code, rest = _split(line)
+        if rest.strip() == f"! {ADOPTED}":
+            new = _TAGGED_DOUBLE.sub(r"\1", code)
+            changed += new != code
+            lines[k] = _join(head, new, rest, line)
+    if not changed:
+        raise ValueError(f"no literal written as double on a line of {MAIN} tagged {ADOPTED}")
+    return {**files, MAIN: "\n".join(lines)}
 
 
 #: (text expected exactly once in the main program, its replacement)
@@ -217,8 +164,10 @@ _PRINTED_IO = (("      OPEN (6,FILE='dint.dat',STATUS='new')\n", "C     OPEN: TO
 
 
 def printed_output(files: dict[str, str]) -> dict[str, str]:
-    """The listing as printed, its WRITEs widened to every cell in full precision."""
-    return _replace_each_once(files, _PRINTED_IO, f"printed {MAIN}")
+    """The listing as printed, its constants read as the 1996 compiler read them (D180:
+    ``context_constants``, as meson.build builds the printed engine), its WRITEs widened to
+    every cell in full precision."""
+    return _replace_each_once(context_constants(files), _PRINTED_IO, f"printed {MAIN}")
 
 
 # ---------------------------------------------------------------- the variants
@@ -249,13 +198,17 @@ class Variant:
 
 
 _X87 = ("-mfpmath=387",)
+_FMA = ("-O2", "-mfma", "-ffp-contract=fast")
 VARIANTS: tuple[Variant, ...] = (
-    Variant("reference", "IEEE single and double, every operation rounded to its declared type "
-            "(RISC workstations: Sun SPARC f77, HP PA-RISC, SGI MIPS, DEC Alpha); the legacy engine's build", True),
-    Variant("O0", "the same machine, unoptimised (f77 without -O, a debugging build)", True, ("-O0",)),
-    Variant("O2", "the same machine, f77 -O2", True, ("-O2",)),
-    Variant("x87", "Intel 486/Pentium PC, x87 80-bit registers with the precision control at 64 bits "
-            "(the power-on default that DOS-extender and Linux compilers, e.g. g77, kept)", True, _X87),
+    Variant("reference", "the adopted arithmetic (register D180): a literal assigned to a REAL*8 variable "
+            "taken as double (the g77 manual's 'context-sensitive constants', which 'many other Fortran "
+            "compilers' did; DEC's and Intel's /fpconstant, 'compatibility with FORTRAN 77'), every operation "
+            "rounded to its declared type (IEEE: Sun SPARC f77, HP PA-RISC, SGI MIPS, DEC Alpha); "
+            "the legacy engine's build", True),
+    Variant("O0", "the same constants, unoptimised (f77 without -O, a debugging build)", True, ("-O0",)),
+    Variant("O2", "the same constants, f77 -O2", True, ("-O2",)),
+    Variant("x87", "the same constants on an Intel 486/Pentium PC, x87 80-bit registers with the precision "
+            "control at 64 bits (the power-on default that DOS-extender and Linux compilers kept)", True, _X87),
     Variant("x87-float-store", "the same PC, every variable stored to memory in its own type "
             "(g77 -ffloat-store, the documented cure of x87 excess precision)", True, _X87 + ("-ffloat-store",)),
     Variant("x87-O0", "the same PC, unoptimised (results stored after each statement)", True, _X87 + ("-O0",)),
@@ -265,28 +218,29 @@ VARIANTS: tuple[Variant, ...] = (
             "FPATAN, FSQRT (gcc ties this to -funsafe-math-optimizations, e.g. X**0.5 as SQRT)", True,
             _X87 + ("-funsafe-math-optimizations", "-fno-associative-math", "-fno-reciprocal-math",
                     "-fsigned-zeros", "-ftrapping-math")),
-    Variant("fma", "IBM RS/6000 POWER, xlf -O (multiply-add fused by default, -qmaf; also HP PA-8000); "
-            "-O2 because gcc forms FMAs only from -O2", True, ("-O2", "-mfma", "-ffp-contract=fast")),
+    Variant("fma", "the same constants on an IBM RS/6000 POWER, xlf -O (multiply-add fused by default, -qmaf; "
+            "also HP PA-8000); -O2 because gcc forms FMAs only from -O2", True, _FMA),
     Variant("real8", "REAL as 64 bits: Cray (64-bit REAL, though not IEEE), the -r8 switch of f77 "
             "(4.3BSD 1985, Sun, DEC), xlf -qautodbl", True,
             ("-fdefault-real-8", "-fdefault-double-8"), keeps_types=False),
-    Variant("long-constants-double", "literal constants of more than seven digits kept in double "
+    Variant("single-constants", "the standard's reading: a literal without a D exponent is REAL*4 wherever "
+            "it stands (g77, which says so, and gfortran's default; the legacy build before D180)", True,
+            transform=single_constants, keeps_types=False),
+    Variant("single-constants-x87", "the same constants on the x87 PC (g77 on Linux or DOS, 80-bit registers)",
+            True, _X87, transform=single_constants, keeps_types=False),
+    Variant("single-constants-fma", "the same constants on the RS/6000 (xlf -O, fused multiply-add)", True,
+            _FMA, transform=single_constants, keeps_types=False),
+    Variant("long-constants-double", "only the literal constants of more than seven digits in double "
             "(1.1636867, 2.3139072, 4.6210569): a hypothesis tested here; no compiler found documented "
             "to decide by the count of digits", False, transform=long_constants_double, keeps_types=False),
-    Variant("context-constants", "a constant assigned to a REAL*8 variable taken as double, "
-            "W/G and 4.0*ATAN(1.0) left single (the g77 manual, 'Context-Sensitive Constants': "
-            "what 'many other compilers' of its time did)", True, transform=context_constants, keeps_types=False),
-    Variant("context-constants-x87", "the same constants on the x87 PC (80-bit registers)", True,
-            _X87, transform=context_constants, keeps_types=False),
-    Variant("context-constants-fma", "the same constants on the RS/6000 (xlf -O, fused multiply-add)", True,
-            ("-O2", "-mfma", "-ffp-contract=fast"), transform=context_constants, keeps_types=False),
     Variant("all-constants-double", "every literal constant as double (Sun f77 -r8const, "
             "HP f90 +real_constant=double; options read in later manuals)", True,
             transform=all_constants_double, keeps_types=False),
     Variant("selected-real8", "what-if, no machine: G, PI, M1..M3 = W/G in REAL*8 with double constants",
             False, transform=selected_real8, keeps_types=False),
     Variant("as-printed", "not an arithmetic: the listing as printed (link PARAMETERs the compiler "
-            "folds), reference flags", False, transform=printed_output, source="printed"),
+            "folds), read as the printed engine's build reads it (D180), reference flags", False,
+            transform=printed_output, source="printed"),
 )
 
 

@@ -5,7 +5,14 @@ from pathlib import Path
 
 from ...command import Command
 from ...readings import CompilerError
-from .arithmetic import OUTPUTS, ReferenceFailed, write
+from .arithmetic import OUTPUTS, RECORD, ReferenceFailed, write
+
+
+def _arguments(parser) -> None:
+    parser.add_argument("--record", action="store_true",
+                        help=f"also write which arithmetics reach each cell's printed digit to the committed "
+                             f"record the table scenes read (harness/scenes/rahman1996/{RECORD.name})")
+
 
 COMMANDS = [Command(
     name="arithmetic",
@@ -15,7 +22,8 @@ COMMANDS = [Command(
     out_help="output folder for arithmetic.md, arithmetic.csv, arithmetic_cells.csv "
              "(default: out/arithmetic/, which reproduce's report links)",
     outputs=OUTPUTS,
-    run=lambda args: write(args.out)[3],
+    run=lambda args: write(args.out, record=args.record)[3],
+    add_arguments=_arguments,
     failures=(CompilerError, ReferenceFailed),
     report_title="Rahman (1996): which digits survive a change of arithmetic",
     report_markdown="arithmetic.md",

@@ -20,7 +20,7 @@ from ....port.rahman1996.quirks import CSSP_CORRECTED, CSSP_PRINTED
 from ...engines import PrintedProgramError, program_path, run_program
 from ...listing_lines import Statement
 from ...table_scene import TableScene
-from . import readings
+from . import arithmetic, readings
 from .quantities import QUANTITIES
 from .table_forms import INERTIA_COLUMNS, SERIES_COLUMNS, as_tables, inertia_frame, series_frame
 
@@ -117,6 +117,32 @@ def statements(table: str):
     return where
 
 
+#: the engines that compute in the listing's arithmetic: a run of the listing under another
+#: arithmetic of the time explains their cells (D181); port_corrected is another model
+LISTING_ENGINES = ("printed", "legacy", "port_printed")
+
+
+def _study_cell(table: str, row) -> tuple[str, str]:
+    """A diff's (table, row key) as the arithmetic study names the cell ("5.2", "120")."""
+    return table.replace("_", "."), str(row) if table == "5_1" else str(int(float(row)))
+
+
+def explained_by_run(table: str):
+    """A cell of ``table`` that an engine in the listing's arithmetic misses is explained by
+    D181 where an arithmetic of the study as consistent with the tables as the adopted one
+    reaches its printed digit (``arithmetic.explaining``, from the committed record)."""
+    def ids(row, column: str, engine: str) -> tuple[str, ...]:
+        if engine not in LISTING_ENGINES:
+            return ()
+        return ("D181",) if arithmetic.explaining(*_study_cell(table, row), column) else ()
+    return ids
+
+
+def trail_notes(table: str):
+    """Which of the study's arithmetics reach a cell's printed digit (``arithmetic.trail_note``)."""
+    return lambda row, column: arithmetic.trail_note(*_study_cell(table, row), column)
+
+
 #: the process the Rahman (1996) scenes share (one run of each engine gives every table); it
 #: starts last, when the Newton kernels it shares with Rahman (1991) are compiled
 GROUP, START = "rahman1996", 3
@@ -142,12 +168,17 @@ def _scene(table: str) -> TableScene:
                "port_corrected is the closed-loop Newton-Euler model (register D079), not the listing's "
                "open loop: its cells differ from the published ones by design.",
                "printed engine: the printed program WRITEs only Table 5.1's crank I_xx (and the input "
-               "torque's percentage, replotted in rahman1996-figures)."],
+               "torque's percentage, replotted in rahman1996-figures); it is built with its constants read "
+               "as the 1996 compiler read them (register D180: applied at build time, legacy/printed/ as printed).",
+               "Which arithmetics of 1996 machines reach each cell's printed digit is in the cell's trail "
+               "(`linkrepro explain`, report.html), from the arithmetic study's record (D180, D181)."],
         quirks=(CSSP_PRINTED, CSSP_CORRECTED),
         rel_floor=REL_FLOOR,
         floor_id="D056",
         quantities=QUANTITIES[f"rahman1996-table{table}"],
         readings=readings,
+        explained_by_run=explained_by_run(table),
+        trail_notes=trail_notes(table),
     )
 
 
