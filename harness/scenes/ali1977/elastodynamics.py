@@ -76,6 +76,8 @@ STEPS_PER_REV = 360
 #: successive revolutions agree to this (in, largest difference of the path point over a
 #: revolution): a steady state; MAX_REVOLUTIONS at most
 PERIODICITY_IN = 1e-6
+#: Exudyn's Newton variant in the driven runs: modified (the Jacobian kept while it converges)
+MODIFIED_NEWTON = False
 MAX_REVOLUTIONS = 40
 #: Exudyn's implicit generalized-alpha: spectral radius (1.0 gives noise in the massless links'
 #: accelerations), Newton's relative tolerance (the builder's: its residual's rounding floor)
@@ -168,17 +170,19 @@ class SteadyState:
 
 def steady_state(rpm: float, elements: int = ELEMENTS, steps: int | None = None, zeta: float = ZETA,
                  start_deg: float = 0.0, link_mass: float = 0.0, side: str = "source",
-                 cached: bool = True) -> SteadyState:
-    """``_steady_state``, each run once per process (the sweep and the checks share runs);
+                 cached: bool = True, periodicity: float = PERIODICITY_IN,
+                 modified_newton: bool = MODIFIED_NEWTON) -> SteadyState:
+    """``_steady_state``, each run once per process (the bisection and the report share runs);
     ``cached=False`` runs it afresh (the bench times runs)."""
     run = _steady_state if cached else _steady_state.__wrapped__
     return run(float(rpm), int(elements), int(steps or steps_per_rev(rpm)), float(zeta), float(start_deg),
-               float(link_mass), side)
+               float(link_mass), side, float(periodicity), bool(modified_newton))
 
 
 @functools.lru_cache(maxsize=64)
 def _steady_state(rpm: float, elements: int, steps: int, zeta: float, start_deg: float,
-                  link_mass: float, side: str) -> SteadyState:
+                  link_mass: float, side: str, periodicity: float = PERIODICITY_IN,
+                  modified_newton: bool = MODIFIED_NEWTON) -> SteadyState:
     """The elastodynamic steady state at ``rpm``: the builder's driven linkage (started at
     ``start_deg`` with the rigid linkage's velocities, undeformed), the beams damped
     (``damping_beta(zeta)``), the crank speed set to ``rpm``; Exudyn's generalized-alpha in
@@ -203,8 +207,8 @@ def _steady_state(rpm: float, elements: int, steps: int, zeta: float, start_deg:
             track = np.asarray(positions[n - 3 * steps:n]).reshape(3, steps, 2)
             one, two = float(np.abs(track[2] - track[1]).max()), float(np.abs(track[2] - track[0]).max())
             found["diffs"] = (one, two)
-            if one < PERIODICITY_IN or two < PERIODICITY_IN:
-                found["period"] = 1 if one < PERIODICITY_IN else 2
+            if one < periodicity or two < periodicity:
+                found["period"] = 1 if one < periodicity else 2
                 return False
         return True
 
@@ -216,7 +220,7 @@ def _steady_state(rpm: float, elements: int, steps: int, zeta: float, start_deg:
     settings.timeIntegration.numberOfSteps = MAX_REVOLUTIONS * steps + 1
     settings.timeIntegration.endTime = (MAX_REVOLUTIONS * steps + 1) * period_s / steps
     settings.timeIntegration.adaptiveStep = False
-    settings.timeIntegration.newton.useModifiedNewton = False
+    settings.timeIntegration.newton.useModifiedNewton = modified_newton
     settings.timeIntegration.newton.relativeTolerance = NEWTON_TOLERANCE
     settings.timeIntegration.generalizedAlpha.spectralRadius = SPECTRAL_RADIUS
     settings.timeIntegration.generalizedAlpha.computeInitialAccelerations = False   # massless links
