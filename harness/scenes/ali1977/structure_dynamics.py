@@ -17,6 +17,7 @@ import math
 import numpy as np
 import pandas as pd
 
+from ....errors import ConvergenceError
 from ....port.ali1977.case1 import cognate_case1, source_case1, source_mechanics
 from ....port.ali1977.cognate import cognate_mechanics
 from ....port.ali1977.data import EXAMPLE
@@ -29,14 +30,20 @@ SIDES, CASE = ("source", "cognate"), 1
 RPM = 300.0
 #: the path point's mass, lbf s^2/in
 MASS = EXAMPLE.mass_lbf / GRAVITY_IN
-#: modal damping ratio at DAMPING_HZ (stiffness-proportional), and the lower one of the study
-ZETA, ZETA_LOW = 0.05, 0.02
+#: modal damping ratio at DAMPING_HZ (stiffness-proportional), and the lower ones of the study
+ZETA, ZETA_LOW, ZETA_LOWEST = 0.05, 0.02, 0.005
 DAMPING_HZ = 10.0
-#: the thesis's structure's speed sweep, rev/min, and its time steps per revolution
-LINEAR_RPM = np.arange(20.0, 401.0, 1.0)
+#: the thesis's structure's speed sweep, rev/min (its limit speeds refined by ``speed_limit``), and
+#: its time steps per revolution
+LINEAR_RPM = np.arange(20.0, 401.0, 5.0)
 LINEAR_STEPS = 720
 #: the quasi-static answer's error, as a fraction of its peak deflection, that sets the speed limit
 ERROR_LEVEL = 0.10
+#: ``speed_limit``: a start bracket LIMIT_BRACKET either side of the first guess, refined until it
+#: is LIMIT_TOLERANCE_RPM wide or a speed's ratio is within LIMIT_RATIO_TOLERANCE of the level
+LIMIT_BRACKET = 0.05
+LIMIT_TOLERANCE_RPM = 0.5
+LIMIT_RATIO_TOLERANCE = 0.005
 
 
 def damping_beta(zeta: float) -> float:
@@ -142,14 +149,70 @@ def crossing(rpm, ratio, level: float = ERROR_LEVEL) -> float:
     return float(rpm[k - 1] + (level - ratio[k - 1]) * (rpm[k] - rpm[k - 1]) / (ratio[k] - ratio[k - 1]))
 
 
+def speed_limit(ratio, guess: float, level: float = ERROR_LEVEL) -> float:
+    """The speed (rpm) where ``ratio(rpm)`` (the quasi-static answer's error over its peak) passes
+    ``level``, near ``guess``: a bracket LIMIT_BRACKET either side of it (widened until it holds
+    the crossing, at most 5 times), then regula falsi kept inside the bracket's middle half, until
+    the bracket is LIMIT_TOLERANCE_RPM wide or a speed's ratio is within LIMIT_RATIO_TOLERANCE of
+    ``level``; the crossing then interpolated linearly, as ``crossing``.  It is the first crossing
+    where the ratio rises through ``level`` once near ``guess`` (the linear model's sweep shows it
+    does); a NaN ratio (a run that failed) raises ConvergenceError."""
+    def at(rpm):
+        value = float(ratio(rpm))
+        if math.isnan(value):
+            raise ConvergenceError(f"speed_limit: the error ratio at {rpm:g} rpm is NaN (the run failed)")
+        return value
+    lo, hi = guess * (1.0 - LIMIT_BRACKET), guess * (1.0 + LIMIT_BRACKET)
+    r_lo, r_hi = at(lo), at(hi)
+    for _ in range(5):
+        if r_lo <= level < r_hi:
+            break
+        if r_lo > level:
+            hi, r_hi = lo, r_lo
+            lo = lo * (1.0 - LIMIT_BRACKET)
+            r_lo = at(lo)
+        else:
+            lo, r_lo = hi, r_hi
+            hi = hi * (1.0 + LIMIT_BRACKET)
+            r_hi = at(hi)
+    else:
+        raise ConvergenceError(f"speed_limit: no crossing of {level:g} within {lo:g}-{hi:g} rpm (guess {guess:g})")
+    while hi - lo > LIMIT_TOLERANCE_RPM:
+        x = lo + (level - r_lo) * (hi - lo) / (r_hi - r_lo)
+        x = min(max(x, lo + (hi - lo) / 4.0), hi - (hi - lo) / 4.0)
+        r = at(x)
+        if r > level:
+            hi, r_hi = x, r
+        else:
+            lo, r_lo = x, r
+        if abs(r / level - 1.0) < LIMIT_RATIO_TOLERANCE:
+            break
+    return lo + (level - r_lo) * (hi - lo) / (r_hi - r_lo)
+
+
+def linear_ratio(rpm: float, zeta: float, side: str = "source") -> float:
+    """The thesis's structure run dynamically at ``rpm``: the quasi-static answer's error over its peak."""
+    deg = np.arange(LINEAR_STEPS) * 360.0 / LINEAR_STEPS
+    out, _ = linear_periodic([rpm], zeta, side=side)
+    peak_qs, _, error = error_of(out[0], quasi_static(deg, rpm, side))
+    return error / peak_qs
+
+
+def linear_limit(sweep: pd.DataFrame, side: str, zeta: float) -> float:
+    """The thesis's structure's limit speed (rpm), ``side`` at ``zeta``: ``speed_limit`` started at
+    the crossing of ``sweep`` (``linear_sweep``'s)."""
+    rows = sweep[(sweep["side"] == side) & (sweep["zeta"] == zeta)]
+    return speed_limit(lambda rpm: linear_ratio(rpm, zeta, side), crossing(rows["rpm"], rows["error_over_peak"]))
+
+
 def linear_sweep() -> pd.DataFrame:
-    """The linear dynamics of the thesis's structure at every LINEAR_RPM, per side, for ZETA and
-    ZETA_LOW: the peak quasi-static deflection, the dynamic peak, the quasi-static answer's error
+    """The linear dynamics of the thesis's structure at every LINEAR_RPM, per side, for ZETA,
+    ZETA_LOW and ZETA_LOWEST: the peak quasi-static deflection, the dynamic peak, the quasi-static answer's error
     over its peak, and how much of a start-up transient is left after a revolution."""
     deg = np.arange(LINEAR_STEPS) * 360.0 / LINEAR_STEPS
     frames = []
     for side in SIDES:
-        for zeta in (ZETA, ZETA_LOW):
+        for zeta in (ZETA, ZETA_LOW, ZETA_LOWEST):
             out, decay = linear_periodic(LINEAR_RPM, zeta, side=side)
             rows = []
             for k, rpm in enumerate(LINEAR_RPM):
