@@ -72,7 +72,7 @@ FREQUENCY_ELEMENTS = 2
 #: builder's default stiff shear (1e4 EA) makes Exudyn's time integration fail (Newton diverges
 #: about one revolution in, measured)
 SHEAR_PER_ELEMENT = 1.0
-#: time steps per revolution from 60 to 300 rpm; below, 360 ceil(60 / rpm); above, 360 ceil(rpm /
+#: time steps per revolution from 30 to 300 rpm; below, 360 ceil(30 / rpm); above, 360 ceil(rpm /
 #: 300), so that a step is never longer than at 300 rpm (at 400 rpm with 360 steps Exudyn's Newton
 #: iteration diverges in the start-up, measured)
 STEPS_PER_REV = 360
@@ -109,8 +109,8 @@ ERROR_HARMONICS = 15
 
 
 def steps_per_rev(rpm: float) -> int:
-    """Time steps per revolution at ``rpm``: STEPS_PER_REV, more below 60 and above 300 rpm."""
-    return STEPS_PER_REV * max(1, math.ceil(60.0 / rpm), math.ceil(rpm / RPM))
+    """Time steps per revolution at ``rpm``: STEPS_PER_REV, more below 30 and above 300 rpm."""
+    return STEPS_PER_REV * max(1, math.ceil(30.0 / rpm), math.ceil(rpm / RPM))
 
 
 # --- Exudyn, on the builder's model -------------------------------------------------------------
@@ -397,7 +397,7 @@ def run(out_dir: Path) -> dict:
     nonlinear), steady_300.csv (the 300 rpm steady state over the revolution), runs_300.csv (the
     300 rpm steady states: Case I, the links' own mass, the damping), limits.csv (the limit speeds),
     limit_runs.csv (Exudyn's runs that found them), error_harmonics.csv (the error's harmonics at
-    the limit), linear_sweep.csv (the thesis's structure with the deflection's inertia, every 5
+    the limit), linear_sweep.csv (the thesis's structure with the deflection's inertia, every 10
     rev/min), summary.csv, elastodynamics.png, cycle.png, report.md."""
     multibody.require()
     target = out_dir / NAME
@@ -417,7 +417,7 @@ def run(out_dir: Path) -> dict:
                                     "dynamic_dy": one.deflection[:, 1], "linear_dynamic_dx": linear300[0, :, 0],
                                     "linear_dynamic_dy": linear300[0, :, 1]}))
     cycle = pd.concat(cycles, ignore_index=True)
-    progress.note(NAME, "linear dynamics, every 5 rev/min")
+    progress.note(NAME, "linear dynamics, every 10 rev/min")
     linear = linear_sweep()
     limit, limit_runs = limits(linear)
     spectrum = error_harmonics(limit_of(limit))
@@ -558,7 +558,7 @@ def report(runs, limit, limit_runs, spectrum, summary) -> str:
              f"({FREQUENCY_ELEMENTS} for the frozen frequencies; shear stiffness {SHEAR_PER_ELEMENT:g} x 12 EI / h^2 per "
              f"element), generalized-alpha (spectral radius {SPECTRAL_RADIUS}), "
              f"{'modified' if MODIFIED_NEWTON else 'full'} Newton to a relative {NEWTON_TOLERANCE:g}, {STEPS_PER_REV} steps "
-             f"per revolution (360 ceil(60/rpm) below 60 rpm); a steady state when two successive revolutions agree to "
+             f"per revolution (360 ceil(30/rpm) below 30 rpm); a steady state when two successive revolutions agree to "
              f"{PERIODICITY_IN:g} in (at most {MAX_REVOLUTIONS}); statics in {LOAD_STEPS} load step(s). The runs start "
              "undeformed with the rigid linkage's velocities. These settings were chosen by `linkrepro bench` (the "
              "elastodynamic knobs): each headline number within 1 % of a converged reference (16 elements per link, "
