@@ -124,7 +124,29 @@ def exudyn_knobs(quick: bool) -> list[Knob]:
     steps = (90, 180, 360) if quick else (90, 180, 360, 720, 1440)
     step = {f"{n} per rev": (lambda n=n: elastodynamics.steady_state(EXUDYN_STEP_RPM, steps=n, cached=False))
             for n in steps}
+    from .structure_dynamics import RPM
+    scene = dict(elements=elastodynamics.ELEMENTS, periodicity=elastodynamics.PERIODICITY_IN,
+                 modified_newton=elastodynamics.MODIFIED_NEWTON)
+    variants = {"the scene's: 4 per link, 360 per rev, periodicity 1e-4, modified Newton": scene,
+                "8 per link": scene | dict(elements=8), "periodicity 1e-6, full Newton": scene | dict(
+                    periodicity=1e-6, modified_newton=False)}
+    if not quick:
+        variants |= {"2 per link": scene | dict(elements=2), "720 per rev": scene | dict(steps=720),
+                     "periodicity 1e-3": scene | dict(periodicity=1e-3)}
+    reference = ("16 per link, 1440 per rev, periodicity 1e-8, full Newton" if not quick else
+                 "8 per link, 720 per rev, periodicity 1e-6, full Newton")
+    variants[reference] = (dict(elements=16, steps=1440, periodicity=1e-8, modified_newton=False) if not quick else
+                           dict(elements=8, steps=720, periodicity=1e-6, modified_newton=False))
+    settings = {name: (lambda kw=kw: elastodynamics.steady_state(RPM, cached=False, **kw)) for name, kw in variants.items()}
+
+    def peak_error(run, ref) -> tuple[float, str]:
+        peak = lambda r: float(np.hypot(*r.deflection.T).max())
+        return abs(peak(run) / peak(ref) - 1.0), f"orbit {elastodynamics.orbit_change(run, ref):.1e} in from the reference"
     return [
+        Knob("Exudyn settings (K.E.D. dynamics)", "exudyn", "",
+             f"Case I source, the {RPM:g} rpm steady state (zeta 0.05): |peak / the reference's - 1|, for the scene's "
+             "elements per link, steps per revolution, periodicity tolerance and Newton variant", settings, reference,
+             peak_error, lambda r: r.steps * r.revolutions),
         Knob("Exudyn mesh (K.E.D.)", "exudyn", "in",
              "Case I source, linear quasi-static deflection at 37 angles from Exudyn's beams, elements per link "
              "(stiff shear: the elements' c h^2 error; shear 12 EI/h^2 cancels it), against the corrected port "
