@@ -39,11 +39,15 @@ LINEAR_RPM = np.arange(20.0, 401.0, 10.0)
 LINEAR_STEPS = 720
 #: the quasi-static answer's error, as a fraction of its peak deflection, that sets the speed limit
 ERROR_LEVEL = 0.10
-#: ``speed_limit``: a start bracket LIMIT_BRACKET either side of the first guess, refined until it
-#: is LIMIT_TOLERANCE_RPM wide or a speed's ratio is within LIMIT_RATIO_TOLERANCE of the level
-LIMIT_BRACKET = 0.05
-LIMIT_TOLERANCE_RPM = 0.5
+#: ``speed_limit``: the error's assumed growth with the speed for the first step (below the limit
+#: it grows at least as the speed squared), the ratio's tolerance about the level (relative; the
+#: limit then within about half of it), the most speeds run
+LIMIT_GROWTH = 2.0
 LIMIT_RATIO_TOLERANCE = 0.005
+LIMIT_RUNS = 8
+#: ``linear_limit``: the speeds searched, from 1 - LIMIT_BELOW to 1 + LIMIT_ABOVE times the sweep's
+#: crossing, every LINEAR_LIMIT_STEP_RPM
+LIMIT_BELOW, LIMIT_ABOVE = 0.2, 0.05
 
 
 def damping_beta(zeta: float) -> float:
@@ -151,56 +155,50 @@ def crossing(rpm, ratio, level: float = ERROR_LEVEL) -> float:
 
 def speed_limit(ratio, guess: float, level: float = ERROR_LEVEL) -> float:
     """The speed (rpm) where ``ratio(rpm)`` (the quasi-static answer's error over its peak) passes
-    ``level``, near ``guess``: a bracket LIMIT_BRACKET either side of it (widened until it holds
-    the crossing, at most 5 times), then regula falsi kept inside the bracket's middle half, until
-    the bracket is LIMIT_TOLERANCE_RPM wide or a speed's ratio is within LIMIT_RATIO_TOLERANCE of
-    ``level``; the crossing then interpolated linearly, as ``crossing``.  It is the first crossing
-    where the ratio rises through ``level`` once near ``guess`` (the linear model's sweep shows it
-    does); a NaN ratio (a run that failed) raises ConvergenceError."""
+    ``level``, near ``guess``: the ratio at ``guess``, then a speed extrapolated as if it grew as
+    the speed to the LIMIT_GROWTH, then the secant in log ratio against log speed through the
+    nearest speeds either side of the level (the last two while none brackets it), until a speed's
+    ratio is within LIMIT_RATIO_TOLERANCE of ``level`` (at most LIMIT_RUNS speeds); the limit then
+    from the secant through the bracket.  The ratio must rise through ``level`` once near ``guess``
+    (the linear model's sweep shows where); a NaN ratio (a failed run), a falling ratio or no
+    convergence raises ConvergenceError."""
+    points: list[tuple[float, float]] = []          # (log rpm, log ratio)
+    target = math.log(level)
+
     def at(rpm):
         value = float(ratio(rpm))
-        if math.isnan(value):
-            raise ConvergenceError(f"speed_limit: the error ratio at {rpm:g} rpm is NaN (the run failed)")
+        if not value > 0.0:
+            raise ConvergenceError(f"speed_limit: the error ratio at {rpm:g} rpm is {value} (NaN or not positive: the run failed)")
+        points.append((math.log(rpm), math.log(value)))
         return value
-    lo, hi = guess * (1.0 - LIMIT_BRACKET), guess * (1.0 + LIMIT_BRACKET)
-    r_lo, r_hi = at(lo), at(hi)
-    for _ in range(5):
-        if r_lo <= level < r_hi:
-            break
-        if r_lo > level:
-            hi, r_hi = lo, r_lo
-            lo = lo * (1.0 - LIMIT_BRACKET)
-            r_lo = at(lo)
-        else:
-            lo, r_lo = hi, r_hi
-            hi = hi * (1.0 + LIMIT_BRACKET)
-            r_hi = at(hi)
-    else:
-        raise ConvergenceError(f"speed_limit: no crossing of {level:g} within {lo:g}-{hi:g} rpm (guess {guess:g})")
-    while hi - lo > LIMIT_TOLERANCE_RPM:
-        x = lo + (level - r_lo) * (hi - lo) / (r_hi - r_lo)
-        x = min(max(x, lo + (hi - lo) / 4.0), hi - (hi - lo) / 4.0)
-        r = at(x)
-        if r > level:
-            hi, r_hi = x, r
-        else:
-            lo, r_lo = x, r
-        if abs(r / level - 1.0) < LIMIT_RATIO_TOLERANCE:
-            break
-    return lo + (level - r_lo) * (hi - lo) / (r_hi - r_lo)
+
+    def secant():
+        below, above = [p for p in points if p[1] < target], [p for p in points if p[1] >= target]
+        a, b = (max(below), min(above)) if below and above else points[-2:]
+        slope = (b[1] - a[1]) / (b[0] - a[0])
+        if not slope > 0.0:
+            raise ConvergenceError(f"speed_limit: the error ratio falls with the speed near {math.exp(a[0]):g} rpm")
+        return math.exp(a[0] + (target - a[1]) / slope)
+    r = at(guess)
+    x = guess * (level / r) ** (1.0 / LIMIT_GROWTH)
+    for _ in range(LIMIT_RUNS - 1):
+        if abs(at(x) / level - 1.0) < LIMIT_RATIO_TOLERANCE:
+            return secant()
+        x = secant()
+    raise ConvergenceError(f"speed_limit: no speed within {LIMIT_RATIO_TOLERANCE:g} of {level:g} in {LIMIT_RUNS} runs "
+                           f"from {guess:g} rpm")
 
 
-#: ``linear_limit``: the thesis's structure at every LINEAR_LIMIT_STEP_RPM within LIMIT_BRACKET of a guess
-LINEAR_LIMIT_STEP_RPM = 0.1
+LINEAR_LIMIT_STEP_RPM = 0.25
 
 
 def linear_limit(sweep: pd.DataFrame, side: str, zeta: float) -> float:
     """The thesis's structure's limit speed (rpm), ``side`` at ``zeta``: ``crossing`` on the speeds
-    every LINEAR_LIMIT_STEP_RPM from 4 LIMIT_BRACKET below to LIMIT_BRACKET above the crossing of ``sweep``
+    every LINEAR_LIMIT_STEP_RPM from LIMIT_BELOW below to LIMIT_ABOVE above the crossing of ``sweep``
     (``linear_sweep``'s; one batched ``linear_periodic``, cheaper than a bisection's calls)."""
     rows = sweep[(sweep["side"] == side) & (sweep["zeta"] == zeta)]
     guess = crossing(rows["rpm"], rows["error_over_peak"])
-    rpms = np.arange(guess * (1.0 - 4.0 * LIMIT_BRACKET), guess * (1.0 + LIMIT_BRACKET), LINEAR_LIMIT_STEP_RPM)
+    rpms = np.arange(guess * (1.0 - LIMIT_BELOW), guess * (1.0 + LIMIT_ABOVE), LINEAR_LIMIT_STEP_RPM)
     deg = np.arange(LINEAR_STEPS) * 360.0 / LINEAR_STEPS
     out, _ = linear_periodic(rpms, zeta, side=side)
     ratio = [(lambda peak_qs, _, error: error / peak_qs)(*error_of(out[k], quasi_static(deg, rpm, side)))
