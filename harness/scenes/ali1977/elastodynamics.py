@@ -656,7 +656,7 @@ def plot_overview(freq, freq_port, table, linear, summary, path: Path) -> None:
                 one["rpm"], one["error_over_peak"], color="tab:green" if side == "source" and zeta == ZETA
                 else "tab:orange" if side == "source" else "tab:brown", lw=1.2 if zeta == ZETA else 0.9, ls=style)
     handles[f"source: Exudyn, zeta {ZETA:g}, at {RPM:g} rpm"], = right.semilogy(
-        [RPM], [summary["dynamic_error_over_peak"]], "s", color="tab:blue", ms=6, mfc="none", ls="none")
+        [RPM], [summary["dynamic_error_over_peak"]], "D", color="k", ms=6, mfc="none", ls="none")
     handles["10 % of the peak"] = right.axhline(ERROR_LEVEL, color="tab:red", lw=1.0)
     right.axvline(summary["speed_limit_rpm"], color="tab:red", lw=1.0, ls=":")
     right.set_xlabel("crank speed (rev/min)")
