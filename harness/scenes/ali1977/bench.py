@@ -174,7 +174,7 @@ def elastodynamic_knobs(quick: bool) -> list[Knob]:
             for n in meshes}
     freq["port_corrected"] = lambda: port
     qs_peak = float(np.hypot(*sd.quasi_static(deg, sd.RPM).T).max())
-    static_settings = [(4, 1), (8, 4)] + ([] if quick else [(4, 4), (16, 8)])
+    static_settings = [(ed.STATIC_ELEMENTS, ed.LOAD_STEPS), (8, 4)] + ([] if quick else [(4, 1), (16, 8)])
     gap = {f"{n} per link, {k} load step(s)": (
         lambda n=n, k=k: max(float(np.hypot(*(ed.exudyn_static(d, n, k)[1] - ed.exudyn_static(d, n, k)[0])))
                              for d in deg) / qs_peak) for n, k in static_settings}

@@ -7,7 +7,7 @@ rev/min, frequencies in Hz, times in seconds.
 from __future__ import annotations
 
 from ...quantities import DIFF, Quantity as Q
-from .elastodynamics import ELEMENTS, FREQUENCY_ELEMENTS, LINK_MASS, QUASI_STATIC_RPM
+from .elastodynamics import FREQUENCY_ELEMENTS, LINK_MASS, QUASI_STATIC_RPM, STATIC_ELEMENTS
 from .multibody import SHEAR_FACTOR
 from .quasi_static import EB_ELEMENTS, PAIR
 from .structure_dynamics import DAMPING_HZ, ERROR_LEVEL, RPM, ZETA, ZETA_LOW, ZETA_LOWEST
@@ -145,8 +145,9 @@ MULTIBODY = PORT_DEFLECTION | {
 #: ``elastodynamics.ELEMENTS`` elements per link; "the thesis's structure run dynamically" is
 #: ``structure_dynamics.linear_periodic`` (the port's stiffness, the deflection's inertia kept)
 _RPM, _LOW = f"{RPM:g} rpm", f"zeta {ZETA_LOW:g}"
-_FINE, _MASS = f"{2 * ELEMENTS} elements per link", f"the links given {LINK_MASS:.0%} of their own mass"
+_MASS = f"the links given {LINK_MASS:.0%} of their own mass"
 _FREQ_FINE = f"{2 * FREQUENCY_ELEMENTS} elements per link"
+_STATIC_FINE = f"{2 * STATIC_ELEMENTS} elements per link"
 ELASTODYNAMICS = PORT_DEFLECTION | {
     "side": SIDE,
     "crank_deg": Q("crank angle (input-link rotation)", "deg"),
@@ -170,8 +171,8 @@ ELASTODYNAMICS = PORT_DEFLECTION | {
                       "nonlinear", "in"),
     "nonlinear_dy": Q(f"path-point deflection along y (source frame) under the {_RPM} load, Exudyn geometrically "
                       "nonlinear", "in"),
-    "nonlinear_fine_mesh_change": Q(f"distance the nonlinear static deflection moves on {_FINE} (empty at the angles "
-                                    "not checked; summary.csv: the source four-bar's largest over the angles)", "in"),
+    "nonlinear_fine_mesh_change": Q(f"distance the nonlinear static deflection moves on {_STATIC_FINE} (empty at the "
+                                    "angles not checked; summary.csv: the source four-bar's largest over the angles)", "in"),
     "nonlinear_load_steps_change": Q("distance the nonlinear static deflection moves with twice the load steps (empty "
                                      "at the angles not checked; summary.csv: the source four-bar's largest over the "
                                      "angles)", "in"),
@@ -241,7 +242,8 @@ _PER_SIDE = {
     "nonlinear_gap_max": Q(f"largest |nonlinear static deflection - the port's| under the {_RPM} load", "in"),
     "nonlinear_gap_over_peak": Q(f"largest |nonlinear static deflection - the port's| under the {_RPM} load / the "
                                  "port's peak", ""),
-    "nonlinear_fine_mesh_change": Q(f"largest distance the nonlinear static deflection moves on {_FINE}", "in"),
+    "nonlinear_fine_mesh_change": Q(f"largest distance the nonlinear static deflection moves on {_STATIC_FINE}",
+                                    "in"),
     "nonlinear_load_steps_change": Q("largest distance the nonlinear static deflection moves with twice the load "
                                      "steps", "in"),
     "exudyn_linear_gap_over_peak": Q(f"largest |Exudyn's linear static deflection - the port's| under the {_RPM} load "
