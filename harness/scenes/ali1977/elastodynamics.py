@@ -13,8 +13,8 @@ round section of E = 1e7 psi, massless links, Case I), in Exudyn's beam model of
   against the drive's harmonics;
 - the deflection's inertia: the elastodynamic steady state (the crank turned at constant speed,
   the deflections integrated in time until successive revolutions agree), against the
-  quasi-static answer; over a sweep of speeds, where the quasi-static answer's error passes
-  10 % of its peak deflection;
+  quasi-static answer; by bracketing, the speed where the quasi-static answer's error passes
+  10 % of its peak deflection, and that error's harmonics there;
 - geometric nonlinearity: the same load on the frozen structure, solved nonlinearly.
 
 Beside Exudyn, the thesis's own structure is run dynamically (``linear_periodic``): the path
@@ -29,8 +29,8 @@ axial and shear damping beta times their stiffnesses, beta = 2 zeta / (2 pi 10 H
 damping ratio zeta at 10 Hz, about the first mode (zeta f1 / 10 Hz for a mode of frequency f1).
 Stiffness-proportional, because mass-proportional damping would act on the links' absolute
 velocities, a drag on the rigid motion itself; zeta = 5 %, the upper end of what bolted and
-pinned metal linkages show (1-5 %).  At 2 % the massless links' run diverges in the start-up at
-300 rpm; with the links given 1 % of their mass it runs (both shown).
+pinned metal linkages show (1-5 %).  At 2 % the massless links' run at 300 rpm fails in
+Exudyn's start-up (shown); with the links' own mass it converges from any start.
 
 Units: inch, pound-force, second; masses lbf s^2/in; crank angles in degrees; frequencies in Hz.
 """
@@ -329,7 +329,11 @@ def _row(kind: str, run: SteadyState) -> dict:
 #: left out: Exudyn's Newton diverges in its start-up whatever the variant, step or start
 #: (``bench``), while with the links' own mass it converges from every start (a test)
 RUNS_300 = (("Case I", "source", ZETA, 0.0), ("Case I", "cognate", ZETA, 0.0),
-            ("links' own mass", "source", ZETA, LINK_MASS), ("links' own mass", "source", ZETA_LOW, LINK_MASS))
+            ("links' own mass", "source", ZETA, LINK_MASS), ("links' own mass", "source", ZETA_LOW, LINK_MASS),
+            ("Case I, full Newton, 720 steps/rev", "source", ZETA_LOW, 0.0))
+#: the failing run's settings (the most favourable measured: either Newton variant, 360 or 720
+#: steps, starts at 0, 90, 180, 270 deg all fail)
+FAILING = dict(steps=2 * STEPS_PER_REV, modified_newton=False)
 
 
 def runs_300() -> pd.DataFrame:
@@ -337,7 +341,12 @@ def runs_300() -> pd.DataFrame:
     rows = []
     for study, side, zeta, link_mass in RUNS_300:
         progress.note(NAME, f"{RPM:g} rpm steady state: {side}, {study}, zeta {zeta:g}")
-        rows.append(_row(study, steady_state(RPM, zeta=zeta, link_mass=link_mass, side=side)))
+        extra = FAILING if zeta == ZETA_LOW and not link_mass else {}
+        run = steady_state(RPM, zeta=zeta, link_mass=link_mass, side=side, **extra)
+        rows.append(_row(study, run) if math.isnan(run.failed_at) else
+                    {"side": side, "study": study, "rpm": RPM, "elements": run.elements, "steps_per_rev": run.steps,
+                     "zeta": zeta, "link_mass": link_mass, "start_deg": run.start_deg,
+                     "revolutions": run.revolutions, "newton_diverged_at_s": run.failed_at})
     return pd.DataFrame(rows)
 
 
@@ -481,6 +490,8 @@ def summarise(freq, freq_port, static, runs, limit, spectrum, linear) -> dict:
             "speed_limit_linear_lowest_zeta_rpm": limit_of(limit, side, ZETA_LOWEST,
                                                            model="thesis's structure, dynamic")}.items()})
     massy = runs[runs["link_mass"] == LINK_MASS].set_index("zeta")
+    failed = runs[(runs["link_mass"] == 0.0) & (runs["zeta"] == ZETA_LOW)]
+    resonant = spectrum[(spectrum["frequency_hz"] >= out["f1_min_hz"]) & (spectrum["frequency_hz"] <= out["f1_max_hz"])]
     top = spectrum.loc[spectrum["amplitude_in"].idxmax()]
     crank_at_limit = float(spectrum["rpm"].iloc[0]) / 60.0
     out.update({
@@ -491,7 +502,13 @@ def summarise(freq, freq_port, static, runs, limit, spectrum, linear) -> dict:
         "low_zeta_peak": float(massy.loc[ZETA_LOW, "dynamic_peak"]),
         "low_zeta_error_over_peak": float(massy.loc[ZETA_LOW, "error_over_peak"]),
         "speed_limit_low_zeta_rpm": limit_of(limit, zeta=ZETA_LOW),
+        "massless_low_zeta_diverged_at_s": float(failed["newton_diverged_at_s"].iloc[0]),
         "limit_error_top_harmonic": int(top["harmonic"]),
+        "limit_resonant_harmonic_first": int(resonant["harmonic"].min()),
+        "limit_resonant_harmonic_last": int(resonant["harmonic"].max()),
+        "limit_resonant_share": float(resonant["share_of_largest"].min()),
+        "limit_next_harmonic_share": float(spectrum.loc[spectrum["harmonic"] == resonant["harmonic"].max() + 1,
+                                                        "share_of_largest"].iloc[0]),
         "limit_f1_min_over_crank": out["f1_min_hz"] / crank_at_limit,
         "limit_f1_max_over_crank": out["f1_max_hz"] / crank_at_limit})
     return out
@@ -534,10 +551,13 @@ def report(runs, limit, limit_runs, spectrum, summary) -> str:
              "The linkage stiffens as it deflects: the nonlinear peak is the smaller.",
              f"- **The speed limit, and why it is there.** With the 10 % criterion the quasi-static answer holds up to "
              f"{s['speed_limit_rpm']:.1f} rpm in Exudyn ({s['speed_limit_linear_rpm']:.1f} rpm for the thesis's structure "
-             f"run dynamically). At that speed the error is spread over the crank's harmonics, the largest the "
-             f"{top}th (error_harmonics.csv), and the first mode lies at {s['limit_f1_min_over_crank']:.1f} to "
-             f"{s['limit_f1_max_over_crank']:.1f} times the crank frequency over the cycle: the limit is where those "
-             "harmonics of the rigid acceleration, small as they are, meet the first mode. So it depends on the "
+             f"run dynamically). At that speed the error is spread over the crank's harmonics 1 to "
+             f"{s['limit_resonant_harmonic_last']}, the largest the {top}th (error_harmonics.csv); the first mode lies at "
+             f"{s['limit_f1_min_over_crank']:.1f} to {s['limit_f1_max_over_crank']:.1f} times the crank frequency over "
+             f"the cycle, and harmonics {s['limit_resonant_harmonic_first']}-{s['limit_resonant_harmonic_last']}, inside "
+             f"that band, still carry at least {s['limit_resonant_share']:.2f} of the largest while the next falls to "
+             f"{s['limit_next_harmonic_share']:.2f}, although the rigid acceleration's harmonics fall fast (the 5th is "
+             f"{s['harmonic_5']:.1%} of the first): the limit is where the high ""harmonics of the rigid acceleration, small as they are, meet the first mode. So it depends on the "
              f"damping, which the thesis does not give: {s['speed_limit_rpm']:.1f} rpm at {ZETA:.0%}, "
              f"{s['speed_limit_low_zeta_rpm']:.1f} at {ZETA_LOW:.0%} (Exudyn); the thesis's structure gives "
              f"{s['speed_limit_linear_rpm']:.1f}, {s['speed_limit_linear_low_zeta_rpm']:.1f} and "
@@ -552,7 +572,8 @@ def report(runs, limit, limit_runs, spectrum, summary) -> str:
              f"quasi-static answer: its steady state at {QUASI_STATIC_RPM:g} rpm scaled by the speed squared, "
              f"peak {s['link_mass_quasi_static_peak']:.2f} in at {RPM:g} rpm).",
              f"- **Less damping.** At {ZETA_LOW:.0%} the massless links' {RPM:g} rpm run fails in Exudyn's start-up "
-             "whatever the Newton variant, step or start (the bench's study), so it is left out; with the links' own "
+             f"(Newton diverges {s['massless_low_zeta_diverged_at_s']:.2f} s in, even with full Newton and half the step), "
+             "so it is left out; with the links' own "
              f"mass it converges from any start (a test holds it) and peaks at {s['low_zeta_peak']:.2f} in, against "
              f"{s['link_mass_dynamic_peak']:.2f} in at {ZETA:.0%}: ordinary resonance, less damping a larger peak.",
              "", "## The model", "", __doc__.split("\n\n", 1)[1].rsplit("\n\nUnits", 1)[0].strip(), "",
@@ -569,8 +590,10 @@ def report(runs, limit, limit_runs, spectrum, summary) -> str:
              "", f"## The {RPM:g} rpm steady states", "",
              "| side | model | zeta | revolutions | last two revs differ (in) | quasi-static peak (in) | dynamic peak (in) | "
              "quasi-static error (in) | error / quasi-static peak |", "|---|---|---|---|---|---|---|---|---|"]
-    lines += [f"| {r.side} | {r.study} | {r.zeta:g} | {r.revolutions} | {r.periodicity_in:.1e} | {r.quasi_static_peak:.4f} | "
-              f"{r.dynamic_peak:.4f} | {r.max_error:.4f} | {r.error_over_peak:.3f} |" for r in runs.itertuples()]
+    lines += [f"| {r.side} | {r.study} | {r.zeta:g} | {r.revolutions} | "
+              + (f"{r.periodicity_in:.1e} | {r.quasi_static_peak:.4f} | {r.dynamic_peak:.4f} | {r.max_error:.4f} | "
+                 f"{r.error_over_peak:.3f} |" if math.isnan(r.newton_diverged_at_s) else
+                 f"Newton diverged at {r.newton_diverged_at_s:.3f} s |  |  |  |  |") for r in runs.itertuples()]
     lines += ["", "## The limit speeds", "", "| side | model | zeta | link mass | error passes 10 % of the peak at (rpm) |",
               "|---|---|---|---|---|"]
     lines += [f"| {r.side} | {r.model} | {r.zeta:g} | {r.link_mass:g} | {r.limit_rpm:.2f} |" for r in limit.itertuples()]

@@ -289,6 +289,16 @@ _SOURCE_ONLY = {
                                   f"Exudyn, {_LOW}, massless links", "rpm"),
     "limit_error_top_harmonic": Q("the largest harmonic of the quasi-static answer's error at the limit speed (Exudyn, "
                                   f"zeta {ZETA:g})", ""),
+    "massless_low_zeta_diverged_at_s": Q(f"time from the start where Exudyn's Newton iteration diverged, the source at "
+                                         f"{_RPM}, {_LOW}, massless links (full Newton, 720 steps per revolution)", "s"),
+    "limit_resonant_harmonic_first": Q("the lowest harmonic of the crank inside the first mode's band at the limit speed",
+                                       ""),
+    "limit_resonant_harmonic_last": Q("the highest harmonic of the crank inside the first mode's band at the limit speed",
+                                      ""),
+    "limit_resonant_share": Q("the smallest share of the largest harmonic among the quasi-static error's harmonics "
+                              "inside the first mode's band, at the limit speed", ""),
+    "limit_next_harmonic_share": Q("the error's harmonic above the first mode's band: its share of the largest, at "
+                                   "the limit speed", ""),
     "limit_f1_min_over_crank": Q("the lowest first natural frequency / the crank frequency at the limit speed", ""),
     "limit_f1_max_over_crank": Q("the highest first natural frequency / the crank frequency at the limit speed", ""),
 }
