@@ -124,7 +124,29 @@ def exudyn_knobs(quick: bool) -> list[Knob]:
     steps = (90, 180, 360) if quick else (90, 180, 360, 720, 1440)
     step = {f"{n} per rev": (lambda n=n: elastodynamics.steady_state(EXUDYN_STEP_RPM, steps=n, cached=False))
             for n in steps}
+    from .structure_dynamics import RPM
+    scene = dict(elements=elastodynamics.ELEMENTS, periodicity=elastodynamics.PERIODICITY_IN,
+                 modified_newton=elastodynamics.MODIFIED_NEWTON)
+    variants = {"the scene's: 4 per link, 360 per rev, periodicity 1e-4, modified Newton": scene,
+                "8 per link": scene | dict(elements=8), "periodicity 1e-6, full Newton": scene | dict(
+                    periodicity=1e-6, modified_newton=False)}
+    if not quick:
+        variants |= {"2 per link": scene | dict(elements=2), "720 per rev": scene | dict(steps=720),
+                     "periodicity 1e-3": scene | dict(periodicity=1e-3)}
+    reference = ("16 per link, 1440 per rev, periodicity 1e-8, full Newton" if not quick else
+                 "8 per link, 720 per rev, periodicity 1e-6, full Newton")
+    variants[reference] = (dict(elements=16, steps=1440, periodicity=1e-8, modified_newton=False) if not quick else
+                           dict(elements=8, steps=720, periodicity=1e-6, modified_newton=False))
+    settings = {name: (lambda kw=kw: elastodynamics.steady_state(RPM, cached=False, **kw)) for name, kw in variants.items()}
+
+    def peak_error(run, ref) -> tuple[float, str]:
+        peak = lambda r: float(np.hypot(*r.deflection.T).max())
+        return abs(peak(run) / peak(ref) - 1.0), f"orbit {elastodynamics.orbit_change(run, ref):.1e} in from the reference"
     return [
+        Knob("Exudyn settings (K.E.D. dynamics)", "exudyn", "",
+             f"Case I source, the {RPM:g} rpm steady state (zeta 0.05): |peak / the reference's - 1|, for the scene's "
+             "elements per link, steps per revolution, periodicity tolerance and Newton variant", settings, reference,
+             peak_error, lambda r: r.steps * r.revolutions),
         Knob("Exudyn mesh (K.E.D.)", "exudyn", "in",
              "Case I source, linear quasi-static deflection at 37 angles from Exudyn's beams, elements per link "
              "(stiff shear: the elements' c h^2 error; shear 12 EI/h^2 cancels it), against the corrected port "
@@ -136,10 +158,56 @@ def exudyn_knobs(quick: bool) -> list[Knob]:
     ]
 
 
+def elastodynamic_knobs(quick: bool) -> list[Knob]:
+    """The elastodynamic study's other settings, each against a converged reference (relative
+    errors): the frozen frequencies' mesh (against the port), the nonlinear statics' mesh and load
+    steps (the largest gap from the linear answer over the peak), and (not ``quick``) the limit
+    speed's mesh, step, periodicity and Newton variant; none without Exudyn."""
+    if not exudyn_gate.available():
+        return []
+    from . import elastodynamics as ed
+    from . import structure_dynamics as sd
+    deg = np.arange(0.0, 360.0, 30.0 if quick else 10.0)
+    port = sd.frequencies_of(sd.port_stiffness(deg))[:, 0]
+    meshes = (2, 4) if quick else (2, 4, 8, 16)
+    freq = {f"{n} per link": (lambda n=n: np.array([sd.frequencies_of(ed.exudyn_stiffness(d, n)[0])[0] for d in deg]))
+            for n in meshes}
+    freq["port_corrected"] = lambda: port
+    qs_peak = float(np.hypot(*sd.quasi_static(deg, sd.RPM).T).max())
+    static_settings = [(ed.STATIC_ELEMENTS, ed.LOAD_STEPS), (8, 4)] + ([] if quick else [(4, 1), (16, 8)])
+    gap = {f"{n} per link, {k} load step(s)": (
+        lambda n=n, k=k: max(float(np.hypot(*(ed.exudyn_static(d, n, k)[1] - ed.exudyn_static(d, n, k)[0])))
+                             for d in deg) / qs_peak) for n, k in static_settings}
+    out = [
+        Knob("Exudyn mesh (frozen frequencies)", "exudyn", "",
+             f"Case I source, the first natural frequency at {len(deg)} angles from Exudyn's condensed stiffness, "
+             "elements per link: largest |f1 / the port's - 1|", freq, "port_corrected",
+             lambda r, ref: (float(np.abs(r / ref - 1.0).max()), ""), lambda r: len(deg)),
+        Knob("Exudyn mesh and load steps (nonlinear statics)", "exudyn", "",
+             f"Case I source, the {sd.RPM:g} rpm load at {len(deg)} angles: the nonlinear answer's largest gap from "
+             "the linear one over the quasi-static peak, against the finest setting's", gap,
+             f"{static_settings[-1][0]} per link, {static_settings[-1][1]} load step(s)",
+             lambda r, ref: (abs(r / ref - 1.0), ""), lambda r: len(deg))]
+    if not quick:
+        guess = sd.linear_limit(sd.linear_sweep(), "source", sd.ZETA)
+        variants = {"the scene's": {}, "reference: 16 per link, 1440 per rev, periodicity 1e-8, full Newton": dict(
+            elements=16, steps=1440, periodicity=1e-8, modified_newton=False)}
+
+        def limit(kw):
+            return lambda: sd.speed_limit(lambda rpm: ed._row("bench", ed.steady_state(rpm, cached=False, **kw))[
+                "error_over_peak"], guess)
+        out.append(Knob("Exudyn settings (limit speed)", "exudyn", "",
+                        "Case I source, zeta 0.05: the speed where the quasi-static error passes 10 % of its peak, "
+                        "|limit / the reference's - 1|", {name: limit(kw) for name, kw in variants.items()},
+                        next(iter(reversed(variants))), lambda r, ref: (abs(r / ref - 1.0), f"{r:.2f} rpm"),
+                        lambda r: 1))
+    return out
+
+
 def knobs(quick: bool) -> list[Knob]:
     """The angle step (``quick``: three settings), REAL*4 storage, Exudyn's mesh and step."""
     steps = (20.0, 5.0, 1.0) if quick else (20.0, 10.0, 5.0, 2.0, 1.0, 0.5, 0.2, 0.1, 0.05, 0.02, 0.01)
-    return [ked_step_knob(steps), ked_precision_knob(), *exudyn_knobs(quick)]
+    return [ked_step_knob(steps), ked_precision_knob(), *exudyn_knobs(quick), *elastodynamic_knobs(quick)]
 
 
 CASE3 = "Case III sub-elements n and mass rule"

@@ -7,10 +7,10 @@ rev/min, frequencies in Hz, times in seconds.
 from __future__ import annotations
 
 from ...quantities import DIFF, Quantity as Q
-from .elastodynamics import ELEMENTS, LIMIT_CHECK_RPM, REGULARIZING_MASS
+from .elastodynamics import FREQUENCY_ELEMENTS, LINK_MASS, QUASI_STATIC_RPM, STATIC_ELEMENTS
 from .multibody import SHEAR_FACTOR
 from .quasi_static import EB_ELEMENTS, PAIR
-from .structure_dynamics import DAMPING_HZ, ERROR_LEVEL, RPM, ZETA, ZETA_LOW
+from .structure_dynamics import DAMPING_HZ, ERROR_LEVEL, RPM, ZETA, ZETA_LOW, ZETA_LOWEST
 
 #: the K.E.D. tables' columns (Tables I-III): published.csv, each engine's CSV
 KED = {
@@ -145,17 +145,19 @@ MULTIBODY = PORT_DEFLECTION | {
 #: ``elastodynamics.ELEMENTS`` elements per link; "the thesis's structure run dynamically" is
 #: ``structure_dynamics.linear_periodic`` (the port's stiffness, the deflection's inertia kept)
 _RPM, _LOW = f"{RPM:g} rpm", f"zeta {ZETA_LOW:g}"
-_FINE, _MASS = f"{2 * ELEMENTS} elements per link", f"the links given {REGULARIZING_MASS:.0%} of their mass"
+_MASS = f"the links given {LINK_MASS:.0%} of their own mass"
+_FREQ_FINE = f"{2 * FREQUENCY_ELEMENTS} elements per link"
+_STATIC_FINE = f"{2 * STATIC_ELEMENTS} elements per link"
 ELASTODYNAMICS = PORT_DEFLECTION | {
     "side": SIDE,
     "crank_deg": Q("crank angle (input-link rotation)", "deg"),
     # frequencies.csv, frequencies_port.csv: the frozen linkage, the path-point mass on massless links
-    "f1_exudyn": Q(f"first natural frequency of the frozen linkage, Exudyn ({ELEMENTS} elements per link, its "
+    "f1_exudyn": Q(f"first natural frequency of the frozen linkage, Exudyn ({FREQUENCY_ELEMENTS} elements per link, its "
                    "stiffness condensed onto the path point)", "Hz"),
-    "f2_exudyn": Q(f"second natural frequency of the frozen linkage, Exudyn ({ELEMENTS} elements per link, its "
+    "f2_exudyn": Q(f"second natural frequency of the frozen linkage, Exudyn ({FREQUENCY_ELEMENTS} elements per link, its "
                    "stiffness condensed onto the path point)", "Hz"),
-    "f1_exudyn_fine": Q(f"first natural frequency of the frozen linkage, Exudyn on {_FINE}", "Hz"),
-    "f2_exudyn_fine": Q(f"second natural frequency of the frozen linkage, Exudyn on {_FINE}", "Hz"),
+    "f1_exudyn_fine": Q(f"first natural frequency of the frozen linkage, Exudyn on {_FREQ_FINE}", "Hz"),
+    "f2_exudyn_fine": Q(f"second natural frequency of the frozen linkage, Exudyn on {_FREQ_FINE}", "Hz"),
     "f1_port": Q("first natural frequency of the frozen linkage, the corrected port's flexibility (beta^T F beta)",
                  "Hz"),
     "f2_port": Q("second natural frequency of the frozen linkage, the corrected port's flexibility (beta^T F beta)",
@@ -169,8 +171,8 @@ ELASTODYNAMICS = PORT_DEFLECTION | {
                       "nonlinear", "in"),
     "nonlinear_dy": Q(f"path-point deflection along y (source frame) under the {_RPM} load, Exudyn geometrically "
                       "nonlinear", "in"),
-    "nonlinear_fine_mesh_change": Q(f"distance the nonlinear static deflection moves on {_FINE} (empty at the angles "
-                                    "not checked; summary.csv: the source four-bar's largest over the angles)", "in"),
+    "nonlinear_fine_mesh_change": Q(f"distance the nonlinear static deflection moves on {_STATIC_FINE} (empty at the "
+                                    "angles not checked; summary.csv: the source four-bar's largest over the angles)", "in"),
     "nonlinear_load_steps_change": Q("distance the nonlinear static deflection moves with twice the load steps (empty "
                                      "at the angles not checked; summary.csv: the source four-bar's largest over the "
                                      "angles)", "in"),
@@ -187,8 +189,15 @@ ELASTODYNAMICS = PORT_DEFLECTION | {
                            f"dynamically, zeta {ZETA:g}", "in"),
     "linear_dynamic_dy": Q(f"path-point deflection along y (source frame) at {_RPM}, the thesis's structure run "
                            f"dynamically, zeta {ZETA:g}", "in"),
-    # convergence.csv (the 300 rpm steady state and its checks), sweep.csv, linear_sweep.csv
-    "study": Q("the run: standard, or the check it is (step, mesh, start, link mass, damping, speed)", ""),
+    # runs_300.csv (the 300 rpm steady states), limit_runs.csv, limits.csv, error_harmonics.csv, linear_sweep.csv
+    "study": Q("the run's model: Case I (massless links) or the links' own mass; limit_runs.csv: limit search", ""),
+    "model": Q("Exudyn, or the thesis's structure run dynamically", ""),
+    "limit_rpm": Q(f"speed where the quasi-static answer's error passes {ERROR_LEVEL:.0%} of its peak", "rpm"),
+    "harmonic": Q("harmonic of the crank (1: once per revolution)", ""),
+    "frequency_hz": Q("the harmonic's frequency at the row's speed", "Hz"),
+    "amplitude_in": Q("amplitude of the harmonic of |steady state - quasi-static deflection| (the two components' "
+                      "Fourier amplitudes, root of the sum of their squares)", "in"),
+    "share_of_largest": Q("the harmonic's amplitude / the largest harmonic's", ""),
     "rpm": Q("crank speed", "rpm"),
     "elements": ELEMENTS_PER_LINK,
     "steps_per_rev": Q("time steps per revolution", ""),
@@ -199,7 +208,9 @@ ELASTODYNAMICS = PORT_DEFLECTION | {
     "periodicity_in": Q("largest difference of the path point between the last two revolutions", "in"),
     "period2_in": Q("largest difference of the path point between the last revolution and the one two before", "in"),
     "quasi_static_peak": Q("peak quasi-static path-point deflection |(dx, dy)| over a revolution at the row's speed, "
-                           f"the corrected port (summary.csv: the source four-bar at {_RPM})", "in"),
+                           "the corrected port (with the links' mass: the model's own steady state at "
+                           f"{QUASI_STATIC_RPM:g} rpm times the speed ratio squared; summary.csv: the source four-bar at "
+                           f"{_RPM})", "in"),
     "dynamic_peak": Q("peak path-point deflection |(dx, dy)| over a revolution of the steady state, Exudyn "
                       "(linear_sweep.csv: the thesis's structure run dynamically; summary.csv: the source four-bar "
                       f"at {_RPM}, zeta {ZETA:g})", "in"),
@@ -207,12 +218,7 @@ ELASTODYNAMICS = PORT_DEFLECTION | {
     "error_over_peak": Q("largest |steady state - quasi-static deflection| / the quasi-static peak, Exudyn "
                          "(linear_sweep.csv: the thesis's structure run dynamically)", ""),
     "link_mass": Q("the beams' mass, a fraction of the links' own (0: massless links, as Case I)", ""),
-    "compared_with": Q("the run that change is measured from", ""),
-    "change": Q("largest distance between this run's steady state and that run's", "in"),
     "newton_diverged_at_s": Q("time from the start where Exudyn's Newton iteration diverged (empty: it did not)", "s"),
-    "linear_peak": Q("peak path-point deflection over a revolution, the thesis's structure run dynamically", "in"),
-    "linear_error_over_peak": Q("largest |deflection - quasi-static| / the quasi-static peak, the thesis's structure "
-                                "run dynamically", ""),
     "transient_left_per_rev": Q("fraction of a start-up transient left after a revolution (the revolution map's "
                                 "spectral radius)", ""),
 }
@@ -228,14 +234,16 @@ _PER_SIDE = {
     "f2_max_hz": Q("highest second natural frequency of the frozen linkage over the cycle (the corrected port, every "
                    "degree)", "Hz"),
     "f1_exudyn_over_port_max": Q("largest |Exudyn's first natural frequency / the port's - 1|", ""),
-    "f1_exudyn_fine_over_port_max": Q(f"largest |Exudyn's first natural frequency on {_FINE} / the port's - 1|", ""),
+    "f1_exudyn_fine_over_port_max": Q(f"largest |Exudyn's first natural frequency on {_FREQ_FINE} / the port's - 1|",
+                                      ""),
     "quasi_static_peak": Q(f"peak quasi-static path-point deflection over a revolution at {_RPM}, the corrected port",
                            "in"),
     "nonlinear_peak": Q(f"peak geometrically nonlinear static deflection under the {_RPM} load, Exudyn", "in"),
     "nonlinear_gap_max": Q(f"largest |nonlinear static deflection - the port's| under the {_RPM} load", "in"),
     "nonlinear_gap_over_peak": Q(f"largest |nonlinear static deflection - the port's| under the {_RPM} load / the "
                                  "port's peak", ""),
-    "nonlinear_fine_mesh_change": Q(f"largest distance the nonlinear static deflection moves on {_FINE}", "in"),
+    "nonlinear_fine_mesh_change": Q(f"largest distance the nonlinear static deflection moves on {_STATIC_FINE}",
+                                    "in"),
     "nonlinear_load_steps_change": Q("largest distance the nonlinear static deflection moves with twice the load "
                                      "steps", "in"),
     "exudyn_linear_gap_over_peak": Q(f"largest |Exudyn's linear static deflection - the port's| under the {_RPM} load "
@@ -247,8 +255,6 @@ _PER_SIDE = {
     "dynamic_revolutions": Q(f"revolutions Exudyn ran to the steady state at {_RPM}", ""),
     "dynamic_periodicity_in": Q(f"largest difference of the path point between the last two revolutions at {_RPM}",
                                 "in"),
-    "half_step_change": Q(f"distance the {_RPM} steady state moves with half the time step", "in"),
-    "fine_mesh_change": Q(f"distance the {_RPM} steady state moves on {_FINE}", "in"),
     "linear_dynamic_peak_300": Q(f"peak deflection of the thesis's structure run dynamically at {_RPM}, "
                                  f"zeta {ZETA:g}", "in"),
     "linear_dynamic_peak_300_low": Q(f"peak deflection of the thesis's structure run dynamically at {_RPM}, {_LOW}",
@@ -260,28 +266,41 @@ _PER_SIDE = {
     "speed_limit_linear_low_zeta_rpm": Q(f"speed where the quasi-static answer's error first passes "
                                          f"{ERROR_LEVEL:.0%} of its peak, the thesis's structure run dynamically "
                                          f"({_LOW})", "rpm"),
+    "speed_limit_linear_lowest_zeta_rpm": Q(f"speed where the quasi-static answer's error first passes "
+                                            f"{ERROR_LEVEL:.0%} of its peak, the thesis's structure run dynamically "
+                                            f"(zeta {ZETA_LOWEST:g})", "rpm"),
 }
 #: summary.csv's numbers of the source four-bar alone
 _SOURCE_ONLY = {
     "crank_hz": Q(f"the crank's frequency at {_RPM}", "Hz"),
     **{f"harmonic_{n}": Q(f"harmonic {n} of the source path point's rigid acceleration, its size / the first's", "")
        for n in range(2, 6)},
-    "coarse_mesh_change": Q(f"distance the source's {_RPM} steady state moves on half the elements per link", "in"),
-    "start_180_change": Q(f"distance the source's {_RPM} steady state moves when started at 180 deg", "in"),
-    "regularizing_mass_change": Q(f"distance the source's {_RPM} steady state moves with {_MASS}", "in"),
-    "massless_low_zeta_diverged_at_s": Q(f"time from the start where Exudyn's Newton iteration diverged, the source at "
-                                         f"{_RPM}, {_LOW}, massless links", "s"),
+    "link_mass_quasi_static_peak": Q(f"peak quasi-static deflection at {_RPM} with {_MASS} (the model's own steady "
+                                     f"state at {QUASI_STATIC_RPM:g} rpm times the speed ratio squared)", "in"),
+    "link_mass_dynamic_peak": Q(f"peak deflection of the steady state at {_RPM}, zeta {ZETA:g}, {_MASS}, Exudyn", "in"),
+    "link_mass_dynamic_error_over_peak": Q(f"largest |steady state - quasi-static| / the quasi-static peak at {_RPM}, "
+                                           f"zeta {ZETA:g}, {_MASS}, Exudyn", ""),
+    "link_mass_speed_limit_rpm": Q(f"speed where the quasi-static answer's error passes {ERROR_LEVEL:.0%} of its peak "
+                                   f"with {_MASS}, Exudyn (zeta {ZETA:g})", "rpm"),
     "low_zeta_peak": Q(f"peak deflection of the source's steady state at {_RPM}, {_LOW}, {_MASS}, Exudyn", "in"),
-    "low_zeta_error": Q(f"largest |steady state - quasi-static deflection| of the source at {_RPM}, {_LOW}, {_MASS}",
-                        "in"),
-    "low_zeta_half_step_change": Q(f"distance the source's {_RPM} steady state at {_LOW}, {_MASS} moves with half the "
-                                   "time step", "in"),
-    "limit_check_error_over_peak": Q(f"the quasi-static answer's error / its peak at {LIMIT_CHECK_RPM:g} rpm, the "
-                                     "source in Exudyn", ""),
-    "limit_check_half_step": Q(f"the quasi-static answer's error / its peak at {LIMIT_CHECK_RPM:g} rpm, the source in "
-                               "Exudyn with half the time step", ""),
-    "limit_check_fine_mesh": Q(f"the quasi-static answer's error / its peak at {LIMIT_CHECK_RPM:g} rpm, the source in "
-                               f"Exudyn on {_FINE}", ""),
+    "low_zeta_error_over_peak": Q(f"largest |steady state - quasi-static| / the quasi-static peak at {_RPM}, {_LOW}, "
+                                  f"{_MASS}, Exudyn", ""),
+    "speed_limit_low_zeta_rpm": Q(f"speed where the quasi-static answer's error passes {ERROR_LEVEL:.0%} of its peak, "
+                                  f"Exudyn, {_LOW}, massless links", "rpm"),
+    "limit_error_top_harmonic": Q("the largest harmonic of the quasi-static answer's error at the limit speed (Exudyn, "
+                                  f"zeta {ZETA:g})", ""),
+    "massless_low_zeta_diverged_at_s": Q(f"time from the start where Exudyn's Newton iteration diverged, the source at "
+                                         f"{_RPM}, {_LOW}, massless links (full Newton, 720 steps per revolution)", "s"),
+    "limit_resonant_harmonic_first": Q("the lowest harmonic of the crank inside the first mode's band at the limit speed",
+                                       ""),
+    "limit_resonant_harmonic_last": Q("the highest harmonic of the crank inside the first mode's band at the limit speed",
+                                      ""),
+    "limit_resonant_share": Q("the smallest share of the largest harmonic among the quasi-static error's harmonics "
+                              "inside the first mode's band, at the limit speed", ""),
+    "limit_next_harmonic_share": Q("the error's harmonic above the first mode's band: its share of the largest, at "
+                                   "the limit speed", ""),
+    "limit_f1_min_over_crank": Q("the lowest first natural frequency / the crank frequency at the limit speed", ""),
+    "limit_f1_max_over_crank": Q("the highest first natural frequency / the crank frequency at the limit speed", ""),
 }
 ELASTODYNAMICS_SUMMARY = (
     _SOURCE_ONLY

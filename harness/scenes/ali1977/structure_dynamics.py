@@ -17,6 +17,7 @@ import math
 import numpy as np
 import pandas as pd
 
+from ....errors import ConvergenceError
 from ....port.ali1977.case1 import cognate_case1, source_case1, source_mechanics
 from ....port.ali1977.cognate import cognate_mechanics
 from ....port.ali1977.data import EXAMPLE
@@ -29,14 +30,24 @@ SIDES, CASE = ("source", "cognate"), 1
 RPM = 300.0
 #: the path point's mass, lbf s^2/in
 MASS = EXAMPLE.mass_lbf / GRAVITY_IN
-#: modal damping ratio at DAMPING_HZ (stiffness-proportional), and the lower one of the study
-ZETA, ZETA_LOW = 0.05, 0.02
+#: modal damping ratio at DAMPING_HZ (stiffness-proportional), and the lower ones of the study
+ZETA, ZETA_LOW, ZETA_LOWEST = 0.05, 0.02, 0.005
 DAMPING_HZ = 10.0
-#: the thesis's structure's speed sweep, rev/min, and its time steps per revolution
-LINEAR_RPM = np.arange(20.0, 401.0, 1.0)
+#: the thesis's structure's speed sweep, rev/min (its limit speeds refined by ``speed_limit``), and
+#: its time steps per revolution
+LINEAR_RPM = np.arange(20.0, 401.0, 10.0)
 LINEAR_STEPS = 720
 #: the quasi-static answer's error, as a fraction of its peak deflection, that sets the speed limit
 ERROR_LEVEL = 0.10
+#: ``speed_limit``: the error's assumed growth with the speed for the first step (below the limit
+#: it grows at least as the speed squared), the ratio's tolerance about the level (relative; the
+#: limit then within about half of it), the most speeds run
+LIMIT_GROWTH = 2.0
+LIMIT_RATIO_TOLERANCE = 0.005
+LIMIT_RUNS = 8
+#: ``linear_limit``: the speeds searched, from 1 - LIMIT_BELOW to 1 + LIMIT_ABOVE times the sweep's
+#: crossing, every LINEAR_LIMIT_STEP_RPM
+LIMIT_BELOW, LIMIT_ABOVE = 0.2, 0.05
 
 
 def damping_beta(zeta: float) -> float:
@@ -142,14 +153,67 @@ def crossing(rpm, ratio, level: float = ERROR_LEVEL) -> float:
     return float(rpm[k - 1] + (level - ratio[k - 1]) * (rpm[k] - rpm[k - 1]) / (ratio[k] - ratio[k - 1]))
 
 
+def speed_limit(ratio, guess: float, level: float = ERROR_LEVEL) -> float:
+    """The speed (rpm) where ``ratio(rpm)`` (the quasi-static answer's error over its peak) passes
+    ``level``, near ``guess``: the ratio at ``guess``, then a speed extrapolated as if it grew as
+    the speed to the LIMIT_GROWTH, then the secant in log ratio against log speed through the
+    nearest speeds either side of the level (the last two while none brackets it), until a speed's
+    ratio is within LIMIT_RATIO_TOLERANCE of ``level`` (at most LIMIT_RUNS speeds); the limit then
+    from the secant through the bracket.  The ratio must rise through ``level`` once near ``guess``
+    (the linear model's sweep shows where); a NaN ratio (a failed run), a falling ratio or no
+    convergence raises ConvergenceError."""
+    points: list[tuple[float, float]] = []          # (log rpm, log ratio)
+    target = math.log(level)
+
+    def at(rpm):
+        value = float(ratio(rpm))
+        if not value > 0.0:
+            raise ConvergenceError(f"speed_limit: the error ratio at {rpm:g} rpm is {value} (NaN or not positive: the run failed)")
+        points.append((math.log(rpm), math.log(value)))
+        return value
+
+    def secant():
+        below, above = [p for p in points if p[1] < target], [p for p in points if p[1] >= target]
+        a, b = (max(below), min(above)) if below and above else points[-2:]
+        slope = (b[1] - a[1]) / (b[0] - a[0])
+        if not slope > 0.0:
+            raise ConvergenceError(f"speed_limit: the error ratio falls with the speed near {math.exp(a[0]):g} rpm")
+        return math.exp(a[0] + (target - a[1]) / slope)
+    r = at(guess)
+    x = guess * (level / r) ** (1.0 / LIMIT_GROWTH)
+    for _ in range(LIMIT_RUNS - 1):
+        if abs(at(x) / level - 1.0) < LIMIT_RATIO_TOLERANCE:
+            return secant()
+        x = secant()
+    raise ConvergenceError(f"speed_limit: no speed within {LIMIT_RATIO_TOLERANCE:g} of {level:g} in {LIMIT_RUNS} runs "
+                           f"from {guess:g} rpm")
+
+
+LINEAR_LIMIT_STEP_RPM = 0.25
+
+
+def linear_limit(sweep: pd.DataFrame, side: str, zeta: float) -> float:
+    """The thesis's structure's limit speed (rpm), ``side`` at ``zeta``: ``crossing`` on the speeds
+    every LINEAR_LIMIT_STEP_RPM from LIMIT_BELOW below to LIMIT_ABOVE above the crossing of ``sweep``
+    (``linear_sweep``'s; one batched ``linear_periodic``, cheaper than a bisection's calls)."""
+    rows = sweep[(sweep["side"] == side) & (sweep["zeta"] == zeta)]
+    guess = crossing(rows["rpm"], rows["error_over_peak"])
+    rpms = np.arange(guess * (1.0 - LIMIT_BELOW), guess * (1.0 + LIMIT_ABOVE), LINEAR_LIMIT_STEP_RPM)
+    deg = np.arange(LINEAR_STEPS) * 360.0 / LINEAR_STEPS
+    out, _ = linear_periodic(rpms, zeta, side=side)
+    ratio = [(lambda peak_qs, _, error: error / peak_qs)(*error_of(out[k], quasi_static(deg, rpm, side)))
+             for k, rpm in enumerate(rpms)]
+    return crossing(rpms, ratio)
+
+
 def linear_sweep() -> pd.DataFrame:
-    """The linear dynamics of the thesis's structure at every LINEAR_RPM, per side, for ZETA and
-    ZETA_LOW: the peak quasi-static deflection, the dynamic peak, the quasi-static answer's error
+    """The linear dynamics of the thesis's structure at every LINEAR_RPM, per side, for ZETA,
+    ZETA_LOW and ZETA_LOWEST: the peak quasi-static deflection, the dynamic peak, the quasi-static answer's error
     over its peak, and how much of a start-up transient is left after a revolution."""
     deg = np.arange(LINEAR_STEPS) * 360.0 / LINEAR_STEPS
     frames = []
     for side in SIDES:
-        for zeta in (ZETA, ZETA_LOW):
+        for zeta in (ZETA, ZETA_LOW, ZETA_LOWEST):
             out, decay = linear_periodic(LINEAR_RPM, zeta, side=side)
             rows = []
             for k, rpm in enumerate(LINEAR_RPM):
