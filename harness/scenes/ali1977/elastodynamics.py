@@ -49,7 +49,7 @@ from ....port.ali1977.quirks import CORRECTED
 from ... import multibody, progress
 from ...csv_output import FULL_PRECISION, write_csv
 from ...scene import ReportScene
-from . import multibody as mb
+from . import multibody as mb, stress
 from .structure_dynamics import (CASE, ERROR_LEVEL, LINEAR_STEPS, RPM, SIDES, ZETA, ZETA_LOW, crossing, damping_beta,
                                  error_of, frequencies_of, linear_periodic, linear_sweep, port_stiffness, quasi_static,
                                  rigid_path_point)
@@ -129,17 +129,23 @@ def exudyn_stiffness(deg: float, elements: int = ELEMENTS, side: str = "source")
 
 
 def exudyn_static(deg: float, elements: int = ELEMENTS, load_steps: int = LOAD_STEPS,
-                  side: str = "source") -> tuple[np.ndarray, np.ndarray]:
+                  side: str = "source", moments: bool = False) -> tuple:
     """The path point's deflection (dx, dy), in, under the Case I load at ``deg`` (300 rpm):
     Exudyn's linear answer and its geometrically nonlinear static solve (``load_steps`` load
-    steps, Newton to NEWTON_TOLERANCE)."""
+    steps, Newton to NEWTON_TOLERANCE); with ``moments``, also the two solves' bending moments
+    (``stress.exudyn_moments``: {"linear": ..., "nonlinear": ...})."""
     model = mb.build(side, float(deg), CASE, elements, masses="none", shear_per_element=SHEAR_PER_ELEMENT)
-    linear = model.linear_deflection()[:2]
+    solution = model.linear_solution()
+    linear = model.node_displacement(model.path_node, solution)[:2]
     settings = model.settings
     settings.staticSolver.numberOfLoadSteps = load_steps
     settings.staticSolver.newton.relativeTolerance = NEWTON_TOLERANCE
     model.mbs.SolveStatic(settings)
-    return linear, model.node_displacement(model.path_node)[:2]
+    nonlinear = model.node_displacement(model.path_node)[:2]
+    if not moments:
+        return linear, nonlinear
+    state = model.mbs.systemData.GetODE2Coordinates()
+    return linear, nonlinear, {"linear": stress.exudyn_moments(model, solution), "nonlinear": stress.exudyn_moments(model, state)}
 
 
 @dataclass
@@ -149,7 +155,8 @@ class SteadyState:
     revolutions (``periodicity``) and between the last and the one before it (``period2``), and
     the steady state's period in revolutions (1, 2, or 0: none within MAX_REVOLUTIONS);
     ``failed_at`` the time (s) where Exudyn's Newton iteration diverged (its deflection then NaN),
-    NaN where it did not."""
+    NaN where it did not; ``moments`` the links' bending moments over the last revolution
+    (``stress.exudyn_moments``: {member: (steps, its nodes)}, lbf in; None where it diverged)."""
     rpm: float
     elements: int
     steps: int
@@ -164,6 +171,7 @@ class SteadyState:
     failed_at: float = math.nan
     link_mass: float = 0.0
     side: str = "source"
+    moments: dict | None = None
 
 
 def steady_state(rpm: float, elements: int = ELEMENTS, steps: int | None = None, zeta: float = ZETA,
@@ -194,10 +202,12 @@ def _steady_state(rpm: float, elements: int, steps: int, zeta: float, start_deg:
     model.set_speed(rpm)
     mbs, node = model.mbs, model.path_node
     positions: list = []
+    states: list = []
     found = {"period": 0, "diffs": (math.inf, math.inf)}
 
     def each_step(mbs_, t):
         positions.append(mbs_.GetNodeOutput(node, exu.OutputVariableType.Position)[:2])
+        states.append(mbs_.systemData.GetODE2Coordinates())
         n = len(positions) - 1
         if n and n % steps == 0 and n >= 3 * steps:
             track = np.asarray(positions[n - 3 * steps:n]).reshape(3, steps, 2)
@@ -238,7 +248,7 @@ def _steady_state(rpm: float, elements: int, steps: int, zeta: float, start_deg:
     last = np.asarray(positions[n - steps:n]) - rigid_path_point(deg, rpm, side)
     one, two = found["diffs"]
     return SteadyState(rpm, elements, steps, zeta, start_deg, deg, last, n // steps, one, two, found["period"],
-                       link_mass=link_mass, side=side)
+                       link_mass=link_mass, side=side, moments=stress.exudyn_moments(model, states[n - steps:n]))
 
 
 # --- the study ------------------------------------------------------------------------------------
@@ -269,7 +279,7 @@ def statics() -> pd.DataFrame:
     for side in SIDES:
         port = quasi_static(STATIC_ANGLES, RPM, side)
         for k, deg in enumerate(STATIC_ANGLES):
-            linear, nonlinear = exudyn_static(deg, side=side)
+            linear, nonlinear, moments = exudyn_static(deg, side=side, moments=True)
             fine = stepped = np.full(2, math.nan)
             if k % STATIC_CHECK_EVERY == 0:
                 _, fine = exudyn_static(deg, 2 * ELEMENTS, side=side)
@@ -278,7 +288,9 @@ def statics() -> pd.DataFrame:
                          "exudyn_linear_dx": linear[0], "exudyn_linear_dy": linear[1],
                          "nonlinear_dx": nonlinear[0], "nonlinear_dy": nonlinear[1],
                          "nonlinear_fine_mesh_change": float(np.hypot(*(fine - nonlinear))),
-                         "nonlinear_load_steps_change": float(np.hypot(*(stepped - nonlinear)))})
+                         "nonlinear_load_steps_change": float(np.hypot(*(stepped - nonlinear))),
+                         **stress.static_columns("exudyn_linear", moments["linear"]),
+                         **stress.static_columns("nonlinear", moments["nonlinear"])})
     return pd.DataFrame(rows)
 
 
@@ -370,7 +382,8 @@ def run(out_dir: Path) -> dict:
     frequencies_port.csv (every degree), statics.csv (the 300 rpm load: port, Exudyn linear and
     nonlinear), steady_300.csv (the 300 rpm steady state over the revolution), convergence.csv
     (its checks), sweep.csv (Exudyn's speed sweep), linear_sweep.csv (the thesis's structure with
-    the deflection's inertia, every rev/min), summary.csv, elastodynamics.png, cycle.png,
+    the deflection's inertia, every rev/min), stress.csv (the links' peak bending stresses,
+    ``stress.table``), summary.csv, elastodynamics.png, cycle.png,
     report.md."""
     multibody.require()
     target = out_dir / NAME
@@ -393,6 +406,11 @@ def run(out_dir: Path) -> dict:
     progress.note(NAME, "linear dynamics, every rev/min")
     linear = linear_sweep()
     summary = summarise(freq, freq_port, static, convergence, table, linear)
+    limits = {side: summary[("" if side == "source" else "cognate_") + "speed_limit_rpm"] for side in SIDES}
+    near = [steady_state(min(speeds, key=lambda rpm: abs(rpm - limits[side])), side=side)       # runs made: the sweep's
+            for side, speeds in zip(SIDES, (SWEEP_RPM, COGNATE_SWEEP_RPM))]
+    stresses = stress.table(static, [standard, cognate, *near], limits)
+    write_csv(stresses, target / "stress.csv", FULL_PRECISION)
     write_csv(freq, target / "frequencies.csv", FULL_PRECISION)
     write_csv(freq_port, target / "frequencies_port.csv", FULL_PRECISION)
     write_csv(static, target / "statics.csv", FULL_PRECISION)
@@ -404,7 +422,7 @@ def run(out_dir: Path) -> dict:
     progress.note(NAME, "figures")
     plot_overview(freq, freq_port, table, linear, summary, target / "elastodynamics.png")
     plot_cycle(cycle, static, convergence, summary, target / "cycle.png")
-    (target / "report.md").write_text(report(freq, static, convergence, table, summary))
+    (target / "report.md").write_text(report(freq, static, convergence, table, summary, stresses))
     return summary
 
 
@@ -475,9 +493,10 @@ def _limit_words(summary: dict) -> str:
             f"of the lowest first natural frequency, {summary['f1_min_hz']:.1f} Hz)")
 
 
-def report(freq, static, convergence, table, summary) -> str:
+def report(freq, static, convergence, table, summary, stresses=None) -> str:
     """report.md: for a mechanism designer, what the 1977 method gets right, where it fails, why,
-    and the speed limit that follows; then the measurements."""
+    and the speed limit that follows; then the measurements (with ``stresses``, stress.csv: whether
+    the links stay elastic)."""
     s = summary
     lines = [f"# {TITLE}", "",
              "## In short", "",
@@ -542,6 +561,7 @@ def report(freq, static, convergence, table, summary) -> str:
              "error: not what a linear resonance does; the thesis's structure run dynamically at "
              f"{ZETA_LOW:.0%} peaks at {s['linear_dynamic_peak_300_low']:.1f} in. Either way the quasi-static "
              "answer is off by more than its own peak.",
+             *([] if stresses is None else stress.report_lines(stresses, s["speed_limit_rpm"])),
              "", "## The model", "", __doc__.split("\n\n", 1)[1].rsplit("\n\nUnits", 1)[0].strip(), "",
              f"Exudyn {multibody.version()}: {ELEMENTS} ObjectBeamGeometricallyExact2D elements per link (shear "
              f"stiffness {SHEAR_PER_ELEMENT:g} x 12 EI / h^2 per element), generalized-alpha (spectral radius {SPECTRAL_RADIUS}), Newton to a "
