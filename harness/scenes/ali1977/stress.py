@@ -16,9 +16,8 @@ sqrt(4 A / pi), c = d / 2, sigma = M c / I = M / S with S = pi d^3 / 32).  The b
   elements (exact for a linear moment).  Exudyn's linear and nonlinear statics (the 300 rpm load
   every 10 deg) and its steady states.
 
-Yield: the thesis gives no material, only E = 1e7 psi and 0.098 lbf/in^3 (Case II's density), which
-are an aluminium alloy's; 0.098 lbf/in^3 is 6061's density (0.0975; 2024 and 7075 are 0.100-0.101), so
-6061-T6 is assumed, its tensile yield 35 ksi (the minimum of the design handbooks) to 40 ksi (typical):
+Yield: the thesis says aluminium (E = 1e7 psi; 0.098 lbf/in^3, Cases II and III) but names no alloy;
+0.098 lbf/in^3 is 6061's density (0.0975; 2024 and 7075 are 0.100-0.101), so 6061-T6 is assumed, its tensile yield 35 ksi (the minimum of the design handbooks) to 40 ksi (typical):
 an assumption, stated as one.  The strongest common alloy, 7075-T6 (yield about 73 ksi), bounds what
 any aluminium could take.
 
@@ -31,6 +30,7 @@ import math
 import numpy as np
 import pandas as pd
 
+from ....port.ali1977.case2 import DENSITY
 from ....port.ali1977.data import EXAMPLE
 from ....port.ali1977.quirks import CORRECTED
 from ....port.ali1977.structure import inertia_load
@@ -136,14 +136,22 @@ def _one(frame: pd.DataFrame, side: str, model: str, rpm: float, link: str) -> p
 def _where(r) -> str:
     """Where a peak is: the member, and the joint or the distance from it (or, unknown, the member alone)."""
     if math.isnan(r.at_in):
-        return r.member
-    return f"{r.member} at {r.from_joint}" if r.at_in == 0.0 else f"{r.member} {r.at_in:.1f} in from {r.from_joint}"
+        return f"the {r.member}"
+    return f"the {r.member} at {r.from_joint}" if r.at_in == 0.0 else f"the {r.member} {r.at_in:.1f} in from {r.from_joint}"
 
 
 def _words(r: pd.Series) -> str:
-    where = _where(r)
-    return (f"{r.moment_lbf_in:.0f} lbf in ({where}, crank at {r.crank_deg:.0f} deg): {r.stress_psi / 1e3:.1f} ksi, "
+    return (f"{r.moment_lbf_in:.0f} lbf in ({_where(r)}, crank angle {r.crank_deg:g} deg): {r.stress_psi / 1e3:.1f} ksi, "
             f"{r.stress_over_yield:.2f} times the yield")
+
+
+def _verdict(psi: float) -> str:
+    """Whether a stress (psi) stays under the assumed alloy's yield, and under the strongest's."""
+    if psi < YIELD_PSI[0]:
+        return f"stays elastic ({psi / 1e3:.1f} ksi)"
+    if psi < STRONGEST[1]:
+        return f"yields ({psi / 1e3:.1f} ksi; {STRONGEST[0]} would hold)"
+    return f"yields ({psi / 1e3:.0f} ksi, {psi / STRONGEST[1]:.1f} times even {STRONGEST[0]}'s yield)"
 
 
 def report_lines(frame: pd.DataFrame, limit_rpm: float) -> list[str]:
@@ -155,10 +163,9 @@ def report_lines(frame: pd.DataFrame, limit_rpm: float) -> list[str]:
     worst = {key: src[(src["model"] == model) & (src["rpm"] == rpm)]["stress_psi"].max()
              for key, model, rpm in (("ked", ked, RPM), ("dynamic", dynamic, RPM), ("ked_limit", ked, limit_rpm),
                                      ("dynamic_limit", dynamic, near))}
-    verdict = lambda psi: "stays elastic" if psi < YIELD_PSI[0] else "yields"          # noqa: E731
     lines = ["", "## Would the example stay elastic?", "",
-             f"The thesis names no material: E = {EXAMPLE.section.modulus:.0e} psi and 0.098 lbf/in^3 (Cases II and III) "
-             f"are an aluminium alloy's, and 0.098 lbf/in^3 is 6061's density; assumed here: {ALLOY}, tensile yield "
+             f"The thesis says aluminium (E = {EXAMPLE.section.modulus / 1e6:g}e6 psi; {DENSITY:g} lbf/in^3 in Cases II and "
+             f"III) but names no alloy; {DENSITY:g} lbf/in^3 is 6061's density, so assumed here: {ALLOY}, tensile yield "
              f"{YIELD_PSI[0] / 1e3:.0f} ksi (the handbooks' minimum) to {YIELD_PSI[1] / 1e3:.0f} ksi (typical); the "
              f"strongest common alloy, {STRONGEST[0]}, yields at about {STRONGEST[1] / 1e3:.0f} ksi. The links are the "
              f"example's round bar (d = {2.0 * math.sqrt(EXAMPLE.section.area / math.pi):.2f} in, S = pi d^3 / 32 = "
@@ -175,12 +182,11 @@ def report_lines(frame: pd.DataFrame, limit_rpm: float) -> list[str]:
              f"- **At the speed limit, {limit_rpm:.0f} rpm**: quasi-statically the largest stress is "
              f"{worst['ked_limit'] / 1e3:.1f} ksi; dynamically (the steady state at {near:g} rpm, the run nearest the "
              f"limit) {worst['dynamic_limit'] / 1e3:.1f} ksi.",
-             f"- **So**: at its design speed the thesis's example {verdict(worst['dynamic'])} dynamically "
-             f"({worst['dynamic'] / 1e3:.0f} ksi, {worst['dynamic'] / STRONGEST[1]:.1f} times even {STRONGEST[0]}'s yield) "
-             f"and {verdict(worst['ked'])} by the thesis's own quasi-static loads ({worst['ked'] / 1e3:.1f} ksi); at the "
-             f"speed limit it {verdict(max(worst['ked_limit'], worst['dynamic_limit']))}. Its 300 rpm deflections are "
-             "those of a linkage past its yield: linear elasticity, which the method and Exudyn's beams both assume, "
-             "no longer holds there.",
+             f"- **So**: at its design speed the thesis's example {_verdict(worst['dynamic'])} dynamically, and "
+             f"{_verdict(worst['ked'])} under the thesis's own quasi-static loads; at the speed limit it "
+             f"{_verdict(max(worst['ked_limit'], worst['dynamic_limit']))}. Its {RPM:g} rpm deflections are those of a "
+             "linkage past its yield: linear elasticity, which the 1977 method and Exudyn's beams both assume, no longer "
+             "holds there.",
              "", "| side | model | rpm | link | peak moment (lbf in) | where | crank (deg) | stress (ksi) | / yield |",
              "|---|---|---|---|---|---|---|---|---|"]
     lines += [f"| {r.side} | {r.model} | {r.rpm:.1f} | {r.link} | {r.moment_lbf_in:.1f} | "
