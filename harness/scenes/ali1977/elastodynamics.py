@@ -36,6 +36,7 @@ Units: inch, pound-force, second; masses lbf s^2/in; crank angles in degrees; fr
 """
 from __future__ import annotations
 
+import collections
 import functools
 import math
 from dataclasses import dataclass
@@ -202,12 +203,12 @@ def _steady_state(rpm: float, elements: int, steps: int, zeta: float, start_deg:
     model.set_speed(rpm)
     mbs, node = model.mbs, model.path_node
     positions: list = []
-    states: list = []
+    states = collections.deque(maxlen=2 * steps)         # (step, ODE2 coordinates): the last two revolutions
     found = {"period": 0, "diffs": (math.inf, math.inf)}
 
     def each_step(mbs_, t):
         positions.append(mbs_.GetNodeOutput(node, exu.OutputVariableType.Position)[:2])
-        states.append(mbs_.systemData.GetODE2Coordinates())
+        states.append((len(positions) - 1, mbs_.systemData.GetODE2Coordinates()))
         n = len(positions) - 1
         if n and n % steps == 0 and n >= 3 * steps:
             track = np.asarray(positions[n - 3 * steps:n]).reshape(3, steps, 2)
@@ -248,7 +249,7 @@ def _steady_state(rpm: float, elements: int, steps: int, zeta: float, start_deg:
     last = np.asarray(positions[n - steps:n]) - rigid_path_point(deg, rpm, side)
     one, two = found["diffs"]
     return SteadyState(rpm, elements, steps, zeta, start_deg, deg, last, n // steps, one, two, found["period"],
-                       link_mass=link_mass, side=side, moments=stress.exudyn_moments(model, states[n - steps:n]))
+                       link_mass=link_mass, side=side, moments=stress.exudyn_moments(model, [q for k, q in states if n - steps <= k < n]))
 
 
 # --- the study ------------------------------------------------------------------------------------
