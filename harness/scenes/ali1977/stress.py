@@ -43,6 +43,8 @@ FROM = {"crank": "O2", "coupler": "A", "extender": "A", "follower": "B"}
 #: the assumed alloy and its tensile yield (psi): minimum, typical
 ALLOY = "6061-T6"
 YIELD_PSI = (35.0e3, 40.0e3)
+#: a moment below this fraction of the largest is none (the follower's: a two-force member; Exudyn's rounding)
+ROUNDING = 1e-9
 #: the strongest common aluminium alloy and its typical tensile yield (psi)
 STRONGEST = ("7075-T6", 73.0e3)
 
@@ -189,7 +191,8 @@ def report_lines(frame: pd.DataFrame, limit_rpm: float) -> list[str]:
              "holds there.",
              "", "| side | model | rpm | link | peak moment (lbf in) | where | crank (deg) | stress (ksi) | / yield |",
              "|---|---|---|---|---|---|---|---|---|"]
+    rounding = ROUNDING * frame["moment_lbf_in"].max()
     lines += [f"| {r.side} | {r.model} | {r.rpm:.1f} | {r.link} | {r.moment_lbf_in:.1f} | "
-              f"{_where(r)} | "
-              f"{r.crank_deg:g} | {r.stress_psi / 1e3:.2f} | {r.stress_over_yield:.2f} |" for r in frame.itertuples()]
+              + (f"{_where(r)} | {r.crank_deg:g}" if r.moment_lbf_in > rounding else "none | ")
+              + f" | {r.stress_psi / 1e3:.2f} | {r.stress_over_yield:.2f} |" for r in frame.itertuples()]
     return lines
