@@ -17,8 +17,9 @@ sqrt(4 A / pi), c = d / 2, sigma = M c / I = M / S with S = pi d^3 / 32).  The b
   every 10 deg) and its steady states.
 
 Yield: the thesis says aluminium (E = 1e7 psi; 0.098 lbf/in^3, Cases II and III) but names no alloy;
-0.098 lbf/in^3 is 6061's density (0.0975; 2024 and 7075 are 0.100-0.101), so 6061-T6 is assumed, its tensile yield 35 ksi (the minimum of the design handbooks) to 40 ksi (typical):
-an assumption, stated as one.  The strongest common alloy, 7075-T6 (yield about 73 ksi), bounds what
+0.098 lbf/in^3 is 6061's density (0.0975; 2024 and 7075 are 0.100-0.101), so 6061-T6 is assumed, its
+tensile yield 35 ksi (the minimum of the design handbooks) to 40 ksi (typical): an assumption, stated
+as one.  The strongest common alloy, 7075-T6 (yield about 73 ksi), bounds what
 any aluminium could take.
 
 Units: inch, pound-force; moments lbf in, stresses psi; crank angles deg; speeds rev/min.
