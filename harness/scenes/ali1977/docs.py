@@ -26,6 +26,22 @@ def structure_dynamics() -> str:
     return "\n".join(lines) + "\n"
 
 
+def stresses() -> str:
+    """The links' peak bending stress under the thesis's own quasi-static loads at the design speed
+    (``stress.ked_moments``: the corrected port's member forces, every degree; no Exudyn needed),
+    against the assumed alloy's yield."""
+    from . import stress
+    deg = np.arange(0.0, 360.0, 1.0)
+    rows = stress.peaks(stress.ked_moments(deg), deg, dict.fromkeys(stress.FROM, 0.0))
+    lines = [f"| link | peak moment at {sd.RPM:g} rpm (lbf in) | where | stress (ksi) | over {stress.ALLOY}'s "
+             f"{stress.YIELD_PSI[0] / 1e3:g} ksi yield |", "|---|---|---|---|---|"]
+    for r in rows:
+        psi = r["moment_lbf_in"] / stress.section_modulus()
+        where = f"{r['member']} at {r['from_joint']}, crank angle {r['crank_deg']:g} deg" if psi else "no bending"
+        lines.append(f"| {r['link']} | {r['moment_lbf_in']:.0f} | {where} | {psi / 1e3:.1f} | {psi / stress.YIELD_PSI[0]:.2f} |")
+    return "\n".join(lines) + "\n"
+
+
 def ked_bound() -> str:
     """The K.E.D. error bound's calibration sample as ``linkrepro ked-bound --record`` last wrote
     it (``calibration.RECORD``): per engine, runs, points checked against 60 digits, refused,
@@ -89,5 +105,5 @@ def ked_example() -> str:
     return "\n".join(lines) + "\n"
 
 
-BLOCKS = {"structure dynamics": structure_dynamics, "ked bound": ked_bound, "ked bound summary": ked_bound_summary,
+BLOCKS = {"structure dynamics": structure_dynamics, "stresses": stresses, "ked bound": ked_bound, "ked bound summary": ked_bound_summary,
           "ked example": ked_example}

@@ -36,6 +36,7 @@ Units: inch, pound-force, second; masses lbf s^2/in; crank angles in degrees; fr
 """
 from __future__ import annotations
 
+import collections
 import functools
 import math
 from dataclasses import dataclass
@@ -49,7 +50,7 @@ from ....port.ali1977.quirks import CORRECTED
 from ... import multibody, progress
 from ...csv_output import FULL_PRECISION, write_csv
 from ...scene import ReportScene
-from . import multibody as mb
+from . import multibody as mb, stress
 from .structure_dynamics import (CASE, ERROR_LEVEL, LINEAR_STEPS, RPM, SIDES, ZETA, ZETA_LOW, ZETA_LOWEST, damping_beta,
                                  error_of, frequencies_of, linear_limit, linear_periodic, linear_sweep, port_stiffness,
                                  quasi_static, speed_limit,
@@ -136,17 +137,23 @@ def exudyn_stiffness(deg: float, elements: int = ELEMENTS, side: str = "source")
 
 
 def exudyn_static(deg: float, elements: int = STATIC_ELEMENTS, load_steps: int = LOAD_STEPS,
-                  side: str = "source") -> tuple[np.ndarray, np.ndarray]:
+                  side: str = "source", moments: bool = False) -> tuple:
     """The path point's deflection (dx, dy), in, under the Case I load at ``deg`` (300 rpm):
     Exudyn's linear answer and its geometrically nonlinear static solve (``load_steps`` load
-    steps, Newton to NEWTON_TOLERANCE)."""
+    steps, Newton to NEWTON_TOLERANCE); with ``moments``, also the two solves' bending moments
+    (``stress.exudyn_moments``: {"linear": ..., "nonlinear": ...})."""
     model = mb.build(side, float(deg), CASE, elements, masses="none", shear_per_element=SHEAR_PER_ELEMENT)
-    linear = model.linear_deflection()[:2]
+    solution = model.linear_solution()
+    linear = model.node_displacement(model.path_node, solution)[:2]
     settings = model.settings
     settings.staticSolver.numberOfLoadSteps = load_steps
     settings.staticSolver.newton.relativeTolerance = NEWTON_TOLERANCE
     model.mbs.SolveStatic(settings)
-    return linear, model.node_displacement(model.path_node)[:2]
+    nonlinear = model.node_displacement(model.path_node)[:2]
+    if not moments:
+        return linear, nonlinear
+    state = model.mbs.systemData.GetODE2Coordinates()
+    return linear, nonlinear, {"linear": stress.exudyn_moments(model, solution), "nonlinear": stress.exudyn_moments(model, state)}
 
 
 @dataclass
@@ -156,7 +163,8 @@ class SteadyState:
     revolutions (``periodicity``) and between the last and the one before it (``period2``), and
     the steady state's period in revolutions (1, 2, or 0: none within MAX_REVOLUTIONS);
     ``failed_at`` the time (s) where Exudyn's Newton iteration diverged (its deflection then NaN),
-    NaN where it did not."""
+    NaN where it did not; ``moments`` the links' bending moments over the last revolution
+    (``stress.exudyn_moments``: {member: (steps, its nodes)}, lbf in; None where it diverged)."""
     rpm: float
     elements: int
     steps: int
@@ -171,6 +179,7 @@ class SteadyState:
     failed_at: float = math.nan
     link_mass: float = 0.0
     side: str = "source"
+    moments: dict | None = None
 
 
 def steady_state(rpm: float, elements: int = ELEMENTS, steps: int | None = None, zeta: float = ZETA,
@@ -203,10 +212,12 @@ def _steady_state(rpm: float, elements: int, steps: int, zeta: float, start_deg:
     model.set_speed(rpm)
     mbs, node = model.mbs, model.path_node
     positions: list = []
+    states = collections.deque(maxlen=2 * steps)         # (step, ODE2 coordinates): the last two revolutions
     found = {"period": 0, "diffs": (math.inf, math.inf)}
 
     def each_step(mbs_, t):
         positions.append(mbs_.GetNodeOutput(node, exu.OutputVariableType.Position)[:2])
+        states.append((len(positions) - 1, mbs_.systemData.GetODE2Coordinates()))
         n = len(positions) - 1
         if n and n % steps == 0 and n >= 3 * steps:
             track = np.asarray(positions[n - 3 * steps:n]).reshape(3, steps, 2)
@@ -247,7 +258,7 @@ def _steady_state(rpm: float, elements: int, steps: int, zeta: float, start_deg:
     last = np.asarray(positions[n - steps:n]) - rigid_path_point(deg, rpm, side)
     one, two = found["diffs"]
     return SteadyState(rpm, elements, steps, zeta, start_deg, deg, last, n // steps, one, two, found["period"],
-                       link_mass=link_mass, side=side)
+                       link_mass=link_mass, side=side, moments=stress.exudyn_moments(model, [q for k, q in states if n - steps <= k < n]))
 
 
 # --- the study ------------------------------------------------------------------------------------
@@ -278,7 +289,7 @@ def statics() -> pd.DataFrame:
     for side in SIDES:
         port = quasi_static(STATIC_ANGLES, RPM, side)
         for k, deg in enumerate(STATIC_ANGLES):
-            linear, nonlinear = exudyn_static(deg, side=side)
+            linear, nonlinear, moments = exudyn_static(deg, side=side, moments=True)
             fine = stepped = np.full(2, math.nan)
             if k % STATIC_CHECK_EVERY == 0:
                 _, fine = exudyn_static(deg, 2 * STATIC_ELEMENTS, side=side)
@@ -287,7 +298,9 @@ def statics() -> pd.DataFrame:
                          "exudyn_linear_dx": linear[0], "exudyn_linear_dy": linear[1],
                          "nonlinear_dx": nonlinear[0], "nonlinear_dy": nonlinear[1],
                          "nonlinear_fine_mesh_change": float(np.hypot(*(fine - nonlinear))),
-                         "nonlinear_load_steps_change": float(np.hypot(*(stepped - nonlinear)))})
+                         "nonlinear_load_steps_change": float(np.hypot(*(stepped - nonlinear))),
+                         **stress.static_columns("exudyn_linear", moments["linear"]),
+                         **stress.static_columns("nonlinear", moments["nonlinear"])})
     return pd.DataFrame(rows)
 
 
@@ -388,6 +401,14 @@ def limit_of(table: pd.DataFrame, side: str = "source", zeta: float = ZETA, link
     return float(one["limit_rpm"].iloc[0])
 
 
+def near_limit(table: pd.DataFrame, runs: pd.DataFrame, side: str) -> "SteadyState":
+    """The Exudyn steady state (ZETA, massless) that ``limits``' search ran nearest ``side``'s limit
+    speed (the cache gives the run back: no new run)."""
+    mine = runs[(runs["side"] == side) & (runs["zeta"] == ZETA) & (runs["link_mass"] == 0.0)]
+    rpm = float(mine["rpm"].iloc[(mine["rpm"] - limit_of(table, side)).abs().argmin()])
+    return steady_state(rpm, side=side)
+
+
 def error_harmonics(rpm: float, count: int = ERROR_HARMONICS) -> pd.DataFrame:
     """The source's quasi-static error over a revolution of its steady state at ``rpm`` (Exudyn,
     ZETA, massless), by harmonic of the crank: harmonic n's amplitude (in: the two components'
@@ -409,7 +430,7 @@ def run(out_dir: Path) -> dict:
     300 rpm steady states: Case I, the links' own mass, the damping), limits.csv (the limit speeds),
     limit_runs.csv (Exudyn's runs that found them), error_harmonics.csv (the error's harmonics at
     the limit), linear_sweep.csv (the thesis's structure with the deflection's inertia, every 10
-    rev/min), summary.csv, elastodynamics.png, cycle.png, report.md."""
+    rev/min), stress.csv (the links' peak bending stresses, ``stress.table``), summary.csv, elastodynamics.png, cycle.png, report.md."""
     multibody.require()
     target = out_dir / NAME
     target.mkdir(parents=True, exist_ok=True)
@@ -433,14 +454,17 @@ def run(out_dir: Path) -> dict:
     limit, limit_runs = limits(linear)
     spectrum = error_harmonics(limit_of(limit))
     summary = summarise(freq, freq_port, static, runs, limit, spectrum, linear)
+    stresses = stress.table(static, [steady_state(RPM, side=side) for side in SIDES]
+                            + [near_limit(limit, limit_runs, side) for side in SIDES],
+                            {side: limit_of(limit, side) for side in SIDES})
     for frame, name in ((freq, "frequencies"), (freq_port, "frequencies_port"), (static, "statics"),
                         (cycle, "steady_300"), (runs, "runs_300"), (limit, "limits"), (limit_runs, "limit_runs"),
-                        (spectrum, "error_harmonics"), (linear, "linear_sweep"), (pd.DataFrame([summary]), "summary")):
+                        (spectrum, "error_harmonics"), (linear, "linear_sweep"), (stresses, "stress"), (pd.DataFrame([summary]), "summary")):
         write_csv(frame, target / f"{name}.csv", FULL_PRECISION)
     progress.note(NAME, "figures")
     plot_overview(freq, freq_port, limit_runs, linear, summary, target / "elastodynamics.png")
     plot_cycle(cycle, static, summary, target / "cycle.png")
-    (target / "report.md").write_text(report(runs, limit, limit_runs, spectrum, summary))
+    (target / "report.md").write_text(report(runs, limit, limit_runs, spectrum, summary, stresses))
     return summary
 
 
@@ -520,9 +544,10 @@ def _limit_words(summary: dict) -> str:
             f"of the lowest first natural frequency, {summary['f1_min_hz']:.1f} Hz)")
 
 
-def report(runs, limit, limit_runs, spectrum, summary) -> str:
+def report(runs, limit, limit_runs, spectrum, summary, stresses=None) -> str:
     """report.md: for a mechanism designer, what the 1977 method gets right, where it fails, why,
-    and the speed limit that follows; then the measurements."""
+    and the speed limit that follows; then the measurements (with ``stresses``, stress.csv: whether
+    the links stay elastic)."""
     s = summary
     top = s["limit_error_top_harmonic"]
     lines = [f"# {TITLE}", "",
@@ -576,6 +601,7 @@ def report(runs, limit, limit_runs, spectrum, summary) -> str:
              "so it is left out; with the links' own "
              f"mass it converges from any start (a test holds it) and peaks at {s['low_zeta_peak']:.2f} in, against "
              f"{s['link_mass_dynamic_peak']:.2f} in at {ZETA:.0%}: ordinary resonance, less damping a larger peak.",
+             *([] if stresses is None else stress.report_lines(stresses, s["speed_limit_rpm"])),
              "", "## The model", "", __doc__.split("\n\n", 1)[1].rsplit("\n\nUnits", 1)[0].strip(), "",
              f"Exudyn {multibody.version()}: {ELEMENTS} ObjectBeamGeometricallyExact2D elements per link "
              f"({FREQUENCY_ELEMENTS} for the frozen frequencies; shear stiffness {SHEAR_PER_ELEMENT:g} x 12 EI / h^2 per "
