@@ -105,5 +105,21 @@ def ked_example() -> str:
     return "\n".join(lines) + "\n"
 
 
-BLOCKS = {"structure dynamics": structure_dynamics, "stresses": stresses, "ked bound": ked_bound, "ked bound summary": ked_bound_summary,
+def exudyn_headline() -> str:
+    """The elastodynamic study's Exudyn figures (the scene ali1977-elastodynamics' summary.csv as
+    reference/ holds it: the verified run, which ``linkrepro verify`` holds equal to a fresh one)."""
+    import pandas as pd
+    from ...verify import REFERENCE_DIR
+    s = pd.read_csv(REFERENCE_DIR / "ali1977-elastodynamics" / "summary.csv.xz").iloc[0]
+    lines = [f"| mechanism | links | quasi-static peak at {sd.RPM:g} rpm (in) | dynamic peak (in) | error / quasi-static "
+             f"peak | error passes {sd.ERROR_LEVEL:.0%} of the peak at (rpm), damping {sd.ZETA:.0%} |", "|---|---|---|---|---|---|"]
+    for name, prefix, links in (("source", "", "massless (Case I)"), ("source", "link_mass_", "their own mass"),
+                                ("cognate", "cognate_", "massless (Case I)")):
+        quasi = s[f"{prefix}quasi_static_peak"] if f"{prefix}quasi_static_peak" in s else s["quasi_static_peak"]
+        lines.append(f"| {name} | {links} | {quasi:.2f} | {s[f'{prefix}dynamic_peak']:.2f} | "
+                     f"{s[f'{prefix}dynamic_error_over_peak']:.2f} | {s[f'{prefix}speed_limit_rpm']:.1f} |")
+    return "\n".join(lines) + "\n"
+
+
+BLOCKS = {"exudyn headline": exudyn_headline, "structure dynamics": structure_dynamics, "stresses": stresses, "ked bound": ked_bound, "ked bound summary": ked_bound_summary,
           "ked example": ked_example}
