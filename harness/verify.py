@@ -280,7 +280,8 @@ def refresh(out_dir: Path, reference_dir: Path = REFERENCE_DIR) -> int:
     """Make the scenes of ``out_dir`` the reference: every CSV xz-compressed, the manifest copied;
     written whole into a new folder beside ``reference_dir`` and renamed into place.  Returns
     the bytes the reference takes.  ``VerifyError`` where a scene's folder is not what its run
-    wrote (``run_folder.read_scene``)."""
+    wrote (``run_folder.read_scene``), or where ``out_dir`` lacks a scene the reference holds
+    (nothing is dropped: the reference stays as it was)."""
     out_dir, reference_dir = Path(out_dir), Path(reference_dir)
     scenes = scenes_in(out_dir)
     if not scenes:
@@ -288,6 +289,10 @@ def refresh(out_dir: Path, reference_dir: Path = REFERENCE_DIR) -> int:
     damaged = [f"{scene}: {why}" for scene in scenes if (why := run_folder.read_scene(out_dir, scene)[1])]
     if damaged:
         raise VerifyError(f"{out_dir} cannot be made the reference: {'; '.join(damaged)}")
+    dropped = sorted(set(reference_scenes(reference_dir)) - set(scenes)) if reference_dir.is_dir() else []
+    if dropped:
+        raise VerifyError(f"{out_dir} cannot be made the reference: it holds no run of {', '.join(dropped)}, which "
+                          f"{reference_dir} does (a refresh replaces the whole reference: run every scene into --out)")
     reference_dir.parent.mkdir(parents=True, exist_ok=True)
     fresh = Path(tempfile.mkdtemp(prefix=".reference-", dir=reference_dir.parent))
     try:

@@ -218,3 +218,13 @@ def test_a_damaged_folder_is_not_made_the_reference(recorded, run, tmp_path):
     (run / "ali1977-table1" / "legacy.csv").write_text("x\n")
     status, _, err = _cli("verify", "--out", str(run), "--reference", str(tmp_path / "ref"), "--refresh")
     assert status == 2 and "cannot be made the reference" in err and not (tmp_path / "ref").exists()
+
+
+def test_a_run_of_fewer_scenes_does_not_replace_the_reference(recorded, run, tmp_path):
+    """--refresh from a run that lacks one of the reference's scenes refuses and keeps the reference whole."""
+    reference = Path(shutil.copytree(recorded[1], tmp_path / "ref"))
+    before = sorted(p.relative_to(reference).as_posix() for p in reference.rglob("*"))
+    shutil.rmtree(run / "ali1977-table1")
+    status, _, err = _cli("verify", "--out", str(run), "--reference", str(reference), "--refresh")
+    assert status == 2 and "it holds no run of ali1977-table1" in err and "Traceback" not in err
+    assert sorted(p.relative_to(reference).as_posix() for p in reference.rglob("*")) == before
