@@ -88,7 +88,8 @@ def test_quick_bench_writes_its_three_files(tmp_path, monkeypatch):
     fronts, told = caption.split("The fronts: ")[1].split(" Without a panel: ")        # which: timing-free
     exudyn = multibody.available()
     assert [f.split(": ")[0] for f in fronts.split("; ")] == [
-        "K.E.D. angle step", *(["Exudyn mesh (K.E.D.)", "Exudyn step (K.E.D. dynamics)"] if exudyn else []),
+        "K.E.D. angle step", *(["Exudyn settings (K.E.D. dynamics)", "Exudyn mesh (K.E.D.)", "Exudyn step (K.E.D. dynamics)",
+                             "Exudyn mesh (frozen frequencies)"] if exudyn else []),
         "1991 angle step", "1991 Newton tolerance", "1991 Newton precision", "CSSP positions L",
         *(["Exudyn step (CSSP)"] if exudyn else [])]
     assert "left out" not in caption

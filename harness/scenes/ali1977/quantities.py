@@ -191,7 +191,8 @@ ELASTODYNAMICS = PORT_DEFLECTION | {
                            f"dynamically, zeta {ZETA:g}", "in"),
     # runs_300.csv (the 300 rpm steady states), limit_runs.csv, limits.csv, error_harmonics.csv, linear_sweep.csv
     "study": Q("the run's model: Case I (massless links) or the links' own mass; limit_runs.csv: limit search", ""),
-    "model": Q("Exudyn, or the thesis's structure run dynamically", ""),
+    "model": Q("Exudyn, or the thesis's structure run dynamically (stress.csv: the model the moment comes from: the "
+               "K.E.D. model's member forces, Exudyn's linear or nonlinear statics, Exudyn's steady state)", ""),
     "limit_rpm": Q(f"speed where the quasi-static answer's error passes {ERROR_LEVEL:.0%} of its peak", "rpm"),
     "harmonic": Q("harmonic of the crank (1: once per revolution)", ""),
     "frequency_hz": Q("the harmonic's frequency at the row's speed", "Hz"),
@@ -221,6 +222,19 @@ ELASTODYNAMICS = PORT_DEFLECTION | {
     "newton_diverged_at_s": Q("time from the start where Exudyn's Newton iteration diverged (empty: it did not)", "s"),
     "transient_left_per_rev": Q("fraction of a start-up transient left after a revolution (the revolution map's "
                                 "spectral radius)", ""),
+    # stress.csv (stress.table): per side, model and speed, each link's peak bending moment and stress
+    "link": Q("the link: crank, coupler (with its extender) or follower", ""),
+    "member": Q("the member of the link where its moment peaks (crank, extender, coupler, follower)", ""),
+    "from_joint": Q("the joint the member's distance is measured from (O2, A, B)", ""),
+    "at_in": Q("distance of the peak from that joint along the member (empty: the statics, read at the joint)", "in"),
+    "moment_lbf_in": Q("peak bending moment of the link over the revolution", "lbf in"),
+    "stress_psi": Q("peak bending stress M c / I of the 0.5 in round section", "psi"),
+    "stress_over_yield": Q("the stress / the assumed alloy's yield (stress.YIELD_PSI, 6061-T6's minimum)", ""),
+    # statics.csv: per member, the bending moment of the largest size along it (Exudyn's linear and nonlinear solves)
+    **{f"{kind}_moment_{member}": Q(f"the {member}'s bending moment of the largest size along it under the {_RPM} load, "
+                                    f"Exudyn {words}", "lbf in")
+       for kind, words in (("exudyn_linear", "linear"), ("nonlinear", "geometrically nonlinear"))
+       for member in ("crank", "extender", "coupler", "follower")},
 }
 #: summary.csv: each four-bar's numbers, the source's under these names and the cognate's as
 #: cognate_<name>; a name a file's column has too keeps that column's words (ELASTODYNAMICS)
