@@ -409,12 +409,12 @@ def near_limit(table: pd.DataFrame, runs: pd.DataFrame, side: str) -> "SteadySta
     return steady_state(rpm, side=side)
 
 
-def error_harmonics(rpm: float, count: int = ERROR_HARMONICS) -> pd.DataFrame:
-    """The source's quasi-static error over a revolution of its steady state at ``rpm`` (Exudyn,
-    ZETA, massless), by harmonic of the crank: harmonic n's amplitude (in: the two components'
+def error_harmonics(run: SteadyState, count: int = ERROR_HARMONICS) -> pd.DataFrame:
+    """The quasi-static error over the last revolution of ``run`` (a massless steady state, e.g.
+    ``near_limit``'s), by harmonic of the crank: harmonic n's amplitude (in: the two components'
     Fourier amplitudes, root of the sum of their squares), its share of the largest, its frequency."""
-    run = steady_state(rpm)
-    error = run.deflection - quasi_static(run.deg, rpm)
+    rpm = run.rpm
+    error = run.deflection - quasi_static(run.deg, rpm, run.side)
     size = 2.0 * np.hypot(*np.abs(np.fft.rfft(error, axis=0)).T) / run.steps
     n = np.arange(1, count + 1)
     return pd.DataFrame({"rpm": rpm, "harmonic": n, "frequency_hz": n * rpm / 60.0, "amplitude_in": size[n],
@@ -429,7 +429,7 @@ def run(out_dir: Path) -> dict:
     nonlinear), steady_300.csv (the 300 rpm steady state over the revolution), runs_300.csv (the
     300 rpm steady states: Case I, the links' own mass, the damping), limits.csv (the limit speeds),
     limit_runs.csv (Exudyn's runs that found them), error_harmonics.csv (the error's harmonics at
-    the limit), linear_sweep.csv (the thesis's structure with the deflection's inertia, every 10
+    the limit: the search's nearest run), linear_sweep.csv (the thesis's structure with the deflection's inertia, every 10
     rev/min), stress.csv (the links' peak bending stresses, ``stress.table``), summary.csv, elastodynamics.png, cycle.png, report.md."""
     multibody.require()
     target = out_dir / NAME
@@ -452,10 +452,10 @@ def run(out_dir: Path) -> dict:
     progress.note(NAME, "linear dynamics, every 10 rev/min")
     linear = linear_sweep()
     limit, limit_runs = limits(linear)
-    spectrum = error_harmonics(limit_of(limit))
+    nearest = [near_limit(limit, limit_runs, side) for side in SIDES]
+    spectrum = error_harmonics(nearest[0])
     summary = summarise(freq, freq_port, static, runs, limit, spectrum, linear)
-    stresses = stress.table(static, [steady_state(RPM, side=side) for side in SIDES]
-                            + [near_limit(limit, limit_runs, side) for side in SIDES],
+    stresses = stress.table(static, [steady_state(RPM, side=side) for side in SIDES] + nearest,
                             {side: limit_of(limit, side) for side in SIDES})
     for frame, name in ((freq, "frequencies"), (freq_port, "frequencies_port"), (static, "statics"),
                         (cycle, "steady_300"), (runs, "runs_300"), (limit, "limits"), (limit_runs, "limit_runs"),
@@ -517,7 +517,7 @@ def summarise(freq, freq_port, static, runs, limit, spectrum, linear) -> dict:
     failed = runs[(runs["link_mass"] == 0.0) & (runs["zeta"] == ZETA_LOW)]
     resonant = spectrum[(spectrum["frequency_hz"] >= out["f1_min_hz"]) & (spectrum["frequency_hz"] <= out["f1_max_hz"])]
     top = spectrum.loc[spectrum["amplitude_in"].idxmax()]
-    crank_at_limit = float(spectrum["rpm"].iloc[0]) / 60.0
+    crank_at_limit = limit_of(limit) / 60.0
     out.update({
         "link_mass_quasi_static_peak": float(massy.loc[ZETA, "quasi_static_peak"]),
         "link_mass_dynamic_peak": float(massy.loc[ZETA, "dynamic_peak"]),
@@ -623,12 +623,13 @@ def report(runs, limit, limit_runs, spectrum, summary, stresses=None) -> str:
     lines += ["", "## The limit speeds", "", "| side | model | zeta | link mass | error passes 10 % of the peak at (rpm) |",
               "|---|---|---|---|---|"]
     lines += [f"| {r.side} | {r.model} | {r.zeta:g} | {r.link_mass:g} | {r.limit_rpm:.2f} |" for r in limit.itertuples()]
-    lines += ["", "Exudyn's runs that found them (from the thesis's structure's limit, a bracket of 5 % either side, "
-              "regula falsi):", "", "| side | zeta | link mass | rpm | steps/rev | revolutions | error / peak |",
+    lines += ["", "Exudyn's runs that found them (``speed_limit``: from the thesis's structure's limit, the secant in "
+              "log error against log speed):", "", "| side | zeta | link mass | rpm | steps/rev | revolutions | error / peak |",
               "|---|---|---|---|---|---|---|"]
     lines += [f"| {r.side} | {r.zeta:g} | {r.link_mass:g} | {r.rpm:.2f} | {r.steps_per_rev} | {r.revolutions} | "
               f"{r.error_over_peak:.4f} |" for r in limit_runs.itertuples()]
-    lines += ["", f"## The error's harmonics at the limit speed ({spectrum['rpm'].iloc[0]:.2f} rpm, source, zeta {ZETA:g})",
+    lines += ["", f"## The error's harmonics at the limit speed (the search's run nearest it, {spectrum['rpm'].iloc[0]:.2f} "
+              f"rpm; source, zeta {ZETA:g})",
               "", f"The first mode: {s['f1_min_hz']:.2f}-{s['f1_max_hz']:.2f} Hz, {s['limit_f1_min_over_crank']:.1f} to "
               f"{s['limit_f1_max_over_crank']:.1f} times the crank frequency.", "",
               "| harmonic | frequency (Hz) | amplitude (in) | of the largest |", "|---|---|---|---|"]
