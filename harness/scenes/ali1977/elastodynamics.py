@@ -401,17 +401,16 @@ def limit_of(table: pd.DataFrame, side: str = "source", zeta: float = ZETA, link
     return float(one["limit_rpm"].iloc[0])
 
 
-def near_limit(table: pd.DataFrame, runs: pd.DataFrame, side: str) -> "SteadyState":
-    """The Exudyn steady state (ZETA, massless) that ``limits``' search ran nearest ``side``'s limit
-    speed (the cache gives the run back: no new run)."""
-    mine = runs[(runs["side"] == side) & (runs["zeta"] == ZETA) & (runs["link_mass"] == 0.0)]
-    rpm = float(mine["rpm"].iloc[(mine["rpm"] - limit_of(table, side)).abs().argmin()])
-    return steady_state(rpm, side=side)
+def at_limit(table: pd.DataFrame, side: str) -> "SteadyState":
+    """The Exudyn steady state (ZETA, massless) at ``side``'s limit speed (``limits``' table): the
+    error's harmonics and the stresses there, at the limit itself rather than at the search's
+    nearest run (which the search may leave about 1 % of the speed away)."""
+    return steady_state(limit_of(table, side), side=side)
 
 
 def error_harmonics(run: SteadyState, count: int = ERROR_HARMONICS) -> pd.DataFrame:
     """The quasi-static error over the last revolution of ``run`` (a massless steady state, e.g.
-    ``near_limit``'s), by harmonic of the crank: harmonic n's amplitude (in: the two components'
+    ``at_limit``'s), by harmonic of the crank: harmonic n's amplitude (in: the two components'
     Fourier amplitudes, root of the sum of their squares), its share of the largest, its frequency."""
     rpm = run.rpm
     error = run.deflection - quasi_static(run.deg, rpm, run.side)
@@ -429,7 +428,7 @@ def run(out_dir: Path) -> dict:
     nonlinear), steady_300.csv (the 300 rpm steady state over the revolution), runs_300.csv (the
     300 rpm steady states: Case I, the links' own mass, the damping), limits.csv (the limit speeds),
     limit_runs.csv (Exudyn's runs that found them), error_harmonics.csv (the error's harmonics at
-    the limit: the search's nearest run), linear_sweep.csv (the thesis's structure with the deflection's inertia, every 10
+    the limit), linear_sweep.csv (the thesis's structure with the deflection's inertia, every 10
     rev/min), stress.csv (the links' peak bending stresses, ``stress.table``), summary.csv, elastodynamics.png, cycle.png, report.md."""
     multibody.require()
     target = out_dir / NAME
@@ -452,10 +451,10 @@ def run(out_dir: Path) -> dict:
     progress.note(NAME, "linear dynamics, every 10 rev/min")
     linear = linear_sweep()
     limit, limit_runs = limits(linear)
-    nearest = [near_limit(limit, limit_runs, side) for side in SIDES]
-    spectrum = error_harmonics(nearest[0])
+    at = [at_limit(limit, side) for side in SIDES]
+    spectrum = error_harmonics(at[0])
     summary = summarise(freq, freq_port, static, runs, limit, spectrum, linear)
-    stresses = stress.table(static, [steady_state(RPM, side=side) for side in SIDES] + nearest,
+    stresses = stress.table(static, [steady_state(RPM, side=side) for side in SIDES] + at,
                             {side: limit_of(limit, side) for side in SIDES})
     for frame, name in ((freq, "frequencies"), (freq_port, "frequencies_port"), (static, "statics"),
                         (cycle, "steady_300"), (runs, "runs_300"), (limit, "limits"), (limit_runs, "limit_runs"),
@@ -517,7 +516,7 @@ def summarise(freq, freq_port, static, runs, limit, spectrum, linear) -> dict:
     failed = runs[(runs["link_mass"] == 0.0) & (runs["zeta"] == ZETA_LOW)]
     resonant = spectrum[(spectrum["frequency_hz"] >= out["f1_min_hz"]) & (spectrum["frequency_hz"] <= out["f1_max_hz"])]
     top = spectrum.loc[spectrum["amplitude_in"].idxmax()]
-    crank_at_limit = limit_of(limit) / 60.0
+    crank_at_limit = float(spectrum["rpm"].iloc[0]) / 60.0
     out.update({
         "link_mass_quasi_static_peak": float(massy.loc[ZETA, "quasi_static_peak"]),
         "link_mass_dynamic_peak": float(massy.loc[ZETA, "dynamic_peak"]),
@@ -628,8 +627,7 @@ def report(runs, limit, limit_runs, spectrum, summary, stresses=None) -> str:
               "|---|---|---|---|---|---|---|"]
     lines += [f"| {r.side} | {r.zeta:g} | {r.link_mass:g} | {r.rpm:.2f} | {r.steps_per_rev} | {r.revolutions} | "
               f"{r.error_over_peak:.4f} |" for r in limit_runs.itertuples()]
-    lines += ["", f"## The error's harmonics at the limit speed (the search's run nearest it, {spectrum['rpm'].iloc[0]:.2f} "
-              f"rpm; source, zeta {ZETA:g})",
+    lines += ["", f"## The error's harmonics at the limit speed ({spectrum['rpm'].iloc[0]:.2f} rpm, source, zeta {ZETA:g})",
               "", f"The first mode: {s['f1_min_hz']:.2f}-{s['f1_max_hz']:.2f} Hz, {s['limit_f1_min_over_crank']:.1f} to "
               f"{s['limit_f1_max_over_crank']:.1f} times the crank frequency.", "",
               "| harmonic | frequency (Hz) | amplitude (in) | of the largest |", "|---|---|---|---|"]
