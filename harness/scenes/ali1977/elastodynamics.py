@@ -401,20 +401,19 @@ def limit_of(table: pd.DataFrame, side: str = "source", zeta: float = ZETA, link
     return float(one["limit_rpm"].iloc[0])
 
 
-def near_limit(table: pd.DataFrame, runs: pd.DataFrame, side: str) -> "SteadyState":
-    """The Exudyn steady state (ZETA, massless) that ``limits``' search ran nearest ``side``'s limit
-    speed (the cache gives the run back: no new run)."""
-    mine = runs[(runs["side"] == side) & (runs["zeta"] == ZETA) & (runs["link_mass"] == 0.0)]
-    rpm = float(mine["rpm"].iloc[(mine["rpm"] - limit_of(table, side)).abs().argmin()])
-    return steady_state(rpm, side=side)
+def at_limit(table: pd.DataFrame, side: str) -> "SteadyState":
+    """The Exudyn steady state (ZETA, massless) at ``side``'s limit speed (``limits``' table): the
+    error's harmonics and the stresses there, at the limit itself rather than at the search's
+    nearest run (which the search may leave about 1 % of the speed away)."""
+    return steady_state(limit_of(table, side), side=side)
 
 
-def error_harmonics(rpm: float, count: int = ERROR_HARMONICS) -> pd.DataFrame:
-    """The source's quasi-static error over a revolution of its steady state at ``rpm`` (Exudyn,
-    ZETA, massless), by harmonic of the crank: harmonic n's amplitude (in: the two components'
+def error_harmonics(run: SteadyState, count: int = ERROR_HARMONICS) -> pd.DataFrame:
+    """The quasi-static error over the last revolution of ``run`` (a massless steady state, e.g.
+    ``at_limit``'s), by harmonic of the crank: harmonic n's amplitude (in: the two components'
     Fourier amplitudes, root of the sum of their squares), its share of the largest, its frequency."""
-    run = steady_state(rpm)
-    error = run.deflection - quasi_static(run.deg, rpm)
+    rpm = run.rpm
+    error = run.deflection - quasi_static(run.deg, rpm, run.side)
     size = 2.0 * np.hypot(*np.abs(np.fft.rfft(error, axis=0)).T) / run.steps
     n = np.arange(1, count + 1)
     return pd.DataFrame({"rpm": rpm, "harmonic": n, "frequency_hz": n * rpm / 60.0, "amplitude_in": size[n],
@@ -452,10 +451,10 @@ def run(out_dir: Path) -> dict:
     progress.note(NAME, "linear dynamics, every 10 rev/min")
     linear = linear_sweep()
     limit, limit_runs = limits(linear)
-    spectrum = error_harmonics(limit_of(limit))
+    at = [at_limit(limit, side) for side in SIDES]
+    spectrum = error_harmonics(at[0])
     summary = summarise(freq, freq_port, static, runs, limit, spectrum, linear)
-    stresses = stress.table(static, [steady_state(RPM, side=side) for side in SIDES]
-                            + [near_limit(limit, limit_runs, side) for side in SIDES],
+    stresses = stress.table(static, [steady_state(RPM, side=side) for side in SIDES] + at,
                             {side: limit_of(limit, side) for side in SIDES})
     for frame, name in ((freq, "frequencies"), (freq_port, "frequencies_port"), (static, "statics"),
                         (cycle, "steady_300"), (runs, "runs_300"), (limit, "limits"), (limit_runs, "limit_runs"),
@@ -623,8 +622,8 @@ def report(runs, limit, limit_runs, spectrum, summary, stresses=None) -> str:
     lines += ["", "## The limit speeds", "", "| side | model | zeta | link mass | error passes 10 % of the peak at (rpm) |",
               "|---|---|---|---|---|"]
     lines += [f"| {r.side} | {r.model} | {r.zeta:g} | {r.link_mass:g} | {r.limit_rpm:.2f} |" for r in limit.itertuples()]
-    lines += ["", "Exudyn's runs that found them (from the thesis's structure's limit, a bracket of 5 % either side, "
-              "regula falsi):", "", "| side | zeta | link mass | rpm | steps/rev | revolutions | error / peak |",
+    lines += ["", "Exudyn's runs that found them (``speed_limit``: from the thesis's structure's limit, the secant in "
+              "log error against log speed):", "", "| side | zeta | link mass | rpm | steps/rev | revolutions | error / peak |",
               "|---|---|---|---|---|---|---|"]
     lines += [f"| {r.side} | {r.zeta:g} | {r.link_mass:g} | {r.rpm:.2f} | {r.steps_per_rev} | {r.revolutions} | "
               f"{r.error_over_peak:.4f} |" for r in limit_runs.itertuples()]

@@ -183,8 +183,8 @@ def report_lines(frame: pd.DataFrame, limit_rpm: float) -> list[str]:
              f"{_words(_one(src, 'source', dynamic, RPM, 'crank'))}; the coupler "
              f"{_words(_one(src, 'source', dynamic, RPM, 'coupler'))}.",
              f"- **At the speed limit, {limit_rpm:.0f} rpm**: quasi-statically the largest stress is "
-             f"{worst['ked_limit'] / 1e3:.1f} ksi; dynamically (the steady state at {near:g} rpm, the run nearest the "
-             f"limit) {worst['dynamic_limit'] / 1e3:.1f} ksi.",
+             f"{worst['ked_limit'] / 1e3:.1f} ksi; dynamically (Exudyn's steady state at the limit, {near:.2f} rpm) "
+             f"{worst['dynamic_limit'] / 1e3:.1f} ksi.",
              f"- **So**: at its design speed the thesis's example {_verdict(worst['dynamic'])} dynamically, and "
              f"{_verdict(worst['ked'])} under the thesis's own quasi-static loads; at the speed limit it "
              f"{_verdict(max(worst['ked_limit'], worst['dynamic_limit']))}. Its {RPM:g} rpm deflections are those of a "
