@@ -127,16 +127,20 @@ def exudyn_knobs(quick: bool) -> list[Knob]:
     from .structure_dynamics import RPM
     scene = dict(elements=elastodynamics.ELEMENTS, periodicity=elastodynamics.PERIODICITY_IN,
                  modified_newton=elastodynamics.MODIFIED_NEWTON)
-    variants = {"the scene's: 4 per link, 360 per rev, periodicity 1e-4, modified Newton": scene,
-                "8 per link": scene | dict(elements=8), "periodicity 1e-6, full Newton": scene | dict(
-                    periodicity=1e-6, modified_newton=False)}
+    def label(elements, steps, periodicity, modified_newton) -> str:
+        """A setting in short: elements per link, steps per revolution, periodicity (in), Newton."""
+        return f"{elements}/link, {steps}/rev, {periodicity:g} in, {'modified' if modified_newton else 'full'}"
+    ours = label(elastodynamics.ELEMENTS, elastodynamics.STEPS_PER_REV, **{k: scene[k] for k in ("periodicity",
+                                                                                               "modified_newton")})
+    variants = {f"the scene's: {ours}": scene, "8/link": scene | dict(elements=8),
+                "1e-06 in, full": scene | dict(periodicity=1e-6, modified_newton=False)}
     if not quick:
-        variants |= {"2 per link": scene | dict(elements=2), "720 per rev": scene | dict(steps=720),
-                     "periodicity 1e-3": scene | dict(periodicity=1e-3)}
-    reference = ("16 per link, 1440 per rev, periodicity 1e-8, full Newton" if not quick else
-                 "8 per link, 720 per rev, periodicity 1e-6, full Newton")
-    variants[reference] = (dict(elements=16, steps=1440, periodicity=1e-8, modified_newton=False) if not quick else
-                           dict(elements=8, steps=720, periodicity=1e-6, modified_newton=False))
+        variants |= {"2/link": scene | dict(elements=2), "720/rev": scene | dict(steps=720),
+                     "0.001 in": scene | dict(periodicity=1e-3)}
+    finest = (dict(elements=16, steps=1440, periodicity=1e-8, modified_newton=False) if not quick else
+              dict(elements=8, steps=720, periodicity=1e-6, modified_newton=False))
+    reference = label(**finest)
+    variants[reference] = finest
     settings = {name: (lambda kw=kw: elastodynamics.steady_state(RPM, cached=False, **kw)) for name, kw in variants.items()}
 
     def peak_error(run, ref) -> tuple[float, str]:
