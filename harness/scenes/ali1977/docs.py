@@ -115,8 +115,7 @@ def exudyn_headline() -> str:
              f"peak | error passes {sd.ERROR_LEVEL:.0%} of the peak at (rpm), damping {sd.ZETA:.0%} |", "|---|---|---|---|---|---|"]
     for name, prefix, links in (("source", "", "massless (Case I)"), ("source", "link_mass_", "their own mass"),
                                 ("cognate", "cognate_", "massless (Case I)")):
-        quasi = s[f"{prefix}quasi_static_peak"] if f"{prefix}quasi_static_peak" in s else s["quasi_static_peak"]
-        lines.append(f"| {name} | {links} | {quasi:.2f} | {s[f'{prefix}dynamic_peak']:.2f} | "
+        lines.append(f"| {name} | {links} | {s[f'{prefix}quasi_static_peak']:.2f} | {s[f'{prefix}dynamic_peak']:.2f} | "
                      f"{s[f'{prefix}dynamic_error_over_peak']:.2f} | {s[f'{prefix}speed_limit_rpm']:.1f} |")
     return "\n".join(lines) + "\n"
 

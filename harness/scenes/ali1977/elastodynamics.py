@@ -51,7 +51,7 @@ from ... import multibody, progress
 from ...csv_output import FULL_PRECISION, write_csv
 from ...scene import ReportScene
 from . import multibody as mb, stress
-from .structure_dynamics import (CASE, ERROR_LEVEL, LINEAR_STEPS, RPM, SIDES, ZETA, ZETA_LOW, ZETA_LOWEST, damping_beta,
+from .structure_dynamics import (CASE, ERROR_LEVEL, RPM, SIDES, ZETA, ZETA_LOW, ZETA_LOWEST, damping_beta,
                                  error_of, frequencies_of, linear_limit, linear_periodic, linear_sweep, port_stiffness,
                                  quasi_static, speed_limit,
                                  rigid_path_point)
@@ -646,13 +646,6 @@ def report(runs, limit, limit_runs, spectrum, summary, stresses=None) -> str:
               f"limit speed is {s['cognate_speed_limit_rpm']:.1f} rpm.",
               "", "![frequencies and limit runs](elastodynamics.png)", "", "![the 300 rpm cycle](cycle.png)", ""]
     return "\n".join(lines)
-
-
-def _period_words(row) -> str:
-    """A run's period in words: 1, 2, none, or where Exudyn's Newton iteration diverged."""
-    if not math.isnan(row.newton_diverged_at_s):
-        return f"diverged at {row.newton_diverged_at_s:.3f} s"
-    return str(row.period) if row.period else "none"
 
 
 def overview(summary: dict) -> list[str]:
