@@ -19,6 +19,7 @@ import sys
 from pathlib import Path
 
 from .. import __version__
+from . import blas_threads
 
 PROG = "linkrepro"
 
@@ -426,6 +427,7 @@ def _main(argv: list[str] | None) -> int:
 def main(argv: list[str] | None = None) -> int:
     """Run the command; return its exit status (argparse's ``SystemExit`` for --help and
     usage errors passes through, as argparse does)."""
+    blas_threads.use_one()
     try:
         return _main(argv)
     except KeyboardInterrupt:

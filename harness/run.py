@@ -157,9 +157,8 @@ def _run_groups(groups: list[list[str]], out_dir: Path, options: RunOptions, par
         return {k: v for names in groups for k, v in _run_group(names, out_dir, options, partial).items()}
     forks = "fork" in multiprocessing.get_all_start_methods()
     context = multiprocessing.get_context("fork" if forks else "spawn")
-    if forks:
-        listing_lines.align_every_listing()        # once here, not in each worker and again for the report
     queue, waiting, running, results = context.Queue(), list(enumerate(groups)), {}, {}
+    aligned = False
     try:
         while waiting or running:
             while waiting and len(running) < workers:
@@ -169,6 +168,9 @@ def _run_groups(groups: list[list[str]], out_dir: Path, options: RunOptions, par
                 with _interrupt_deferred():           # never half-started
                     worker.start()
                     running[index] = worker
+            if not aligned:          # the report's listing alignment, while the workers run (no scene needs it)
+                listing_lines.align_every_listing()
+                aligned = True
             try:
                 kind, key, value = queue.get(timeout=0.2)
             except Empty:

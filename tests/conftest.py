@@ -3,8 +3,12 @@ the hypothesis profiles of the property-based tests."""
 import os
 from pathlib import Path
 
-import pytest
-from hypothesis import HealthCheck, settings
+from linkrepro.harness import blas_threads
+
+blas_threads.use_one()           # as every linkrepro command: one BLAS thread (harness/blas_threads.py)
+
+import pytest  # noqa: E402
+from hypothesis import HealthCheck, settings  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent
 # a figure that breaks a rule of harness/figures.py (text under 9 pt, a label over data, ...)
