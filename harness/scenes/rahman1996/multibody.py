@@ -47,9 +47,9 @@ QUANTITIES = (("5_3", "shaking force", "lbf", 2), ("5_4", "shaking moment", "lbf
 MASSES = ("before", "after")
 JOINTS = ("universal", "spherical")
 #: the step (deg of crank) of the comparison, chosen by ``linkrepro bench``'s knob "Exudyn step
-#: (CSSP)" (``bench.exudyn_step``, over STEPS): the largest difference falls as h^2 (7e-5 of the
-#: peaks at 1 deg) to about 1e-6 at 0.1 deg, and below to a round-off floor (3e-7 to 8e-7 at
-#: 0.05 deg), so a finer step buys nothing the comparison needs
+#: (CSSP)" (``bench.exudyn_step``, over STEPS): the largest difference falls as h^2 (7e-5 to 9e-5
+#: of the peaks at 1 deg) to about 1e-6 at 0.1 deg, and below to a round-off floor (3e-7 to 8e-7
+#: at 0.05 deg), so a finer step buys nothing the comparison needs
 STEP_DEG = 0.1
 #: the steps of the bench's study, deg
 STEPS = (1.0, 0.5, 0.2, 0.1, 0.05)
