@@ -62,7 +62,7 @@ FIGURES = {
 }
 
 #: rahman1996-multibody (multibody.py): curves.csv (long: ``port``, ``exudyn`` in the unit of
-#: the row's ``table``), agreement.csv (``peak``, ``max_difference`` likewise), step_convergence.csv
+#: the row's ``table``), agreement.csv (``peak``, ``max_difference`` likewise)
 _COMPARED = ("5_3", "5_4", "5_7")
 MULTIBODY = {
     **{table: TABLE_QUANTITY[table] for table in _COMPARED},
@@ -78,10 +78,6 @@ MULTIBODY = {
     "ground_residual": Q("largest |sum of m a + the ground joints' reactions| over the revolution (Newton's law by "
                          "Exudyn's constraint forces)", "lbf"),
     "exudyn_seconds": Q("Exudyn's wall time for the run (masses and crank pin)", "s"),
-    "step_deg": Q("Exudyn's time step, as crank rotation", "deg"),
-    **{f"relative_{table}": Q(f"largest |Exudyn - the corrected port| / the peak, {TABLE_QUANTITY[table].words} "
-                              f"(Table {table.replace('_', '.')}), before masses, universal crank pin", "")
-       for table in _COMPARED},
 }
 
 QUANTITIES = {f"rahman1996-table{table}": _table(table) for table in TABLE_QUANTITY}
