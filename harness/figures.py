@@ -45,8 +45,10 @@ MAX_WIDTH_IN = 12.0
 #: colours in a written PNG (an adaptive palette; antialiased lines need a few shades each)
 PALETTE = 96
 #: zlib level of a written PNG: 8 is within 2 % of 9's size at under half its time (a figure:
-#: ~20 against ~55 ms); the palette comes from Pillow's fast octree, ~10 times quicker than
-#: median cut and no farther off the drawn colours at the 99th percentile pixel
+#: ~20 against ~55 ms).  The palette comes from Pillow's fast octree, ~10 times quicker than
+#: median cut; it moves a colour by a few levels of 255 (white to 254, a line's colour by up to
+#: ~10), median cut kept the most used ones exact; neither's worst pixel is farther off
+#: (measured on 7 figures of a run: at most 55 against 74)
 ZLIB_LEVEL = 8
 RC = {"font.size": 10, "axes.titlesize": 10, "axes.labelsize": 10, "xtick.labelsize": 9,
       "ytick.labelsize": 9, "legend.fontsize": 9, "figure.titlesize": 11, "legend.frameon": True,
