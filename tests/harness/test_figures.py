@@ -16,9 +16,7 @@ X = np.linspace(0.0, 360.0, 73)
 
 
 def drawn(fig):
-    canvas = FigureCanvasAgg(fig)
-    canvas.draw()
-    return figures.problems(fig, canvas.get_renderer())
+    return figures.problems(fig, figures.draw(fig).get_renderer())
 
 
 def clean():
@@ -54,6 +52,7 @@ def test_a_clean_figure_passes(tmp_path):
     (lambda fig, ax: ax.set_ylabel("deflection (in, rad)"), "several units"),
     (lambda fig, ax: ax.set_xlabel(""), "without a x label"),
     (lambda fig, ax: fig.text(0.5, 0.93, "over the title", ha="center", fontsize=10), "over"),
+    (lambda fig, ax: fig.text(0.5, 0.9, "two lines\nover the title", ha="center", fontsize=10), "'two lines"),
     (lambda fig, ax: (ax.plot(X, 0 * X + 2.0, color="tab:blue", label="legacy again"), ax.legend(loc="upper left")),
      "look alike"),
 ])
@@ -97,9 +96,19 @@ def test_a_tick_outside_a_log_view_is_not_counted():
         ax.set_xlabel("condition")
     axes[0].set_ylabel("relative error")
     fig.subplots_adjust(left=0.07, right=0.97, bottom=0.15, top=0.9, wspace=0.04)
-    assert drawn(fig) == []
+    renderer = figures.draw(fig).get_renderer()
+    assert figures.problems(fig, renderer) == []
     outside = [tick.label1 for tick in axes[0].xaxis.get_major_ticks() if tick.get_loc() < axes[0].get_xlim()[0]]
-    assert outside and {id(label) for label in outside} <= figures._undrawn_ticks(fig)
+    assert outside and all(label.get_text() for label in outside)
+    assert not {id(label) for label in outside} & set(renderer.drawn)
+
+
+def test_the_checks_need_the_renderer_that_notes_the_texts():
+    fig, _ = clean()
+    canvas = FigureCanvasAgg(fig)
+    canvas.draw()
+    with pytest.raises(TypeError, match="figures.draw"):
+        figures.problems(fig, canvas.get_renderer())
 
 
 #: every scene whose figures this project's harness draws (rahman1991-example's are its own tests')

@@ -115,7 +115,7 @@ def _draw_case(case: str, curves: pd.DataFrame, path: Path) -> Path:
             for (rpm, engine), g in one.groupby(["rpm", "engine"], sort=False):
                 ax.plot(g["input_deg"].to_numpy(), g["value"].to_numpy(), label=f"{engine}, {rpm:g} rpm",
                         **_style(engine, rpm))
-            ax.set_title(wrap_title(f"{mech} four-bar: {QUANTITIES[q].words}", 3.0))
+            ax.set_title(wrap_title(f"{mech} four-bar: {QUANTITIES[q].words}", 3.0), y=1.0)   # no layout pass
             ax.set_ylabel(QUANTITIES[q].unit)
             ax.grid(alpha=0.3)
     for ax in axes[-1]:

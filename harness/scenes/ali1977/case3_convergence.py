@@ -122,8 +122,8 @@ def plot_case3(data: pd.DataFrame, path) -> None:
         ax.set_xlabel(CASE3[x].label)
         ax.grid(alpha=0.3, which="both")
     by_n.set_ylabel(CASE3["error_in"].label)
-    by_n.set_title("tip error against sub-elements n")
-    by_time.set_title("tip error against the port's wall time (after a warm-up call)")
+    by_n.set_title("tip error against sub-elements n", y=1.0)   # no layout pass
+    by_time.set_title("tip error against the port's wall time (after a warm-up call)", y=1.0)
     top_legend(fig, dict(zip(*reversed(by_n.get_legend_handles_labels()))), rows=2)
     coupled = data[data["model"] == "coupled"]
     most = coupled[coupled["n"] == coupled["n"].max()]

@@ -137,7 +137,8 @@ def plot(data: pd.DataFrame, path: Path) -> None:
                    label="warning level: half the stored digits")
         ax.axhline(1.0, color="tab:red", lw=1.2, label="refusal level: 1 (SingularPositionError)")
         ax.set_xlabel("condition: links' spread / sin^2(transmission angle)")
-        ax.set_title(f"{engine}: {'REAL*4 storage, as the listings' if real4 else 'IEEE double, the corrected port'}")
+        ax.set_title(f"{engine}: {'REAL*4 storage, as the listings' if real4 else 'IEEE double, the corrected port'}",
+                     y=1.0)                                      # no layout pass
         ax.set_ylim(1e-18, 10.0)
         ax.grid(alpha=0.3, which="both")
     axes[0].set_ylabel("relative error of dx, dy and l2 * rot")

@@ -72,7 +72,7 @@ def plot_figures(pct: pd.DataFrame, outdir: Path, misprinted: set[tuple[str, flo
         for engine, group in pct[pct["table"] == table].groupby("engine", sort=False):
             ax.plot(group["crank_deg"].to_numpy(), group["pct"].to_numpy(), label=engine, **ENGINE_STYLE[engine])
         ax.set_title(f"Figure 5.{k} (Table 5.{k + 1})\n"
-                     + wrap_title(TABLE_QUANTITY[table].words, panel_width(12.0, across)))
+                     + wrap_title(TABLE_QUANTITY[table].words, panel_width(12.0, across)), y=1.0)   # no layout pass
         ax.set_ylabel(f"decrement ({QUANTITIES['pct'].unit})")
         ax.grid(alpha=0.3)
     for ax in axes[-1]:
