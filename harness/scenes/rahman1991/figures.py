@@ -61,7 +61,7 @@ ENGINE_WORDS = {"port_printed": "port_printed, the method as printed",
 LABEL = {"a4": "a4", "s1": "S1", "alpha4_deg": "alpha4"}
 UNIT = {column: q.unit for column, q in CONFIGURATION.items()}
 #: the ideal case, then the family's three members (Okabe-Ito colours: told apart in colour
-#: blindness); drawn without antialiasing (``draw_row``): 3 px and 1 px of the exact colour
+#: blindness); drawn without antialiasing (``draw_row``): 3 px and 1 px of the colour, unblended
 STYLES = [dict(color="k", lw=2.25, antialiased=False, zorder=1)] + [
     dict(color=color, lw=0.75, antialiased=False, zorder=2) for color in ("#0072B2", "#D55E00", "#009E73")]
 #: a component is constant when its values differ by at most this, relative to max(1, |value|)
@@ -228,8 +228,9 @@ def draw_row(ax, data: Row) -> None:
     family k's crank angles shifted by k * ``STEP`` deg, a frame and a grid drawn for each.  Every
     point of every curve, broken through a pole (``broken``); a triangle on the edge for each run
     of points beyond it (``excursions``).  Curves, triangles and frames are drawn without
-    antialiasing: in the PNG's palette their colours stay exact (an antialiased 1 px blue line
-    came out teal), and the file is half the size."""
+    antialiasing: in the PNG's palette their colours stay unblended, within the few levels the
+    palette's octree moves a colour (an antialiased 1 px blue line came out teal), and the file
+    is half the size."""
     lo, hi = data.limits if data.limits is not None else (-1.0, 1.0)
     shifts = STEP * np.arange(len(data.panels))
     ax.set_ylim(lo, hi)
