@@ -96,7 +96,8 @@ def save(fig: Figure, path: Path, caption: str, **margins) -> Path:
     text.add_itxt(CAPTION_KEY, caption)
     buffer = io.BytesIO()
     image.quantize(PALETTE, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE).save(
-        buffer, format="png", optimize=True, pnginfo=text)
+        buffer, format="png", pnginfo=text)     # zlib's default level: optimize=True (level 9) takes 10x
+                                                # the time for files 8 % smaller
     Path(path).write_bytes(buffer.getvalue())
     return Path(path)
 
