@@ -60,6 +60,7 @@ time in s; crank angles ``deg`` in degrees.
 """
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass, field
 
@@ -275,7 +276,7 @@ class Model:
         ``deg`` (the same numbers, without adding every item again)."""
         if self.mode != "frozen":
             raise ValueError("move needs the frozen structure (mode='frozen')")
-        rig = rigid(self.side, [deg])
+        rig = _rigid_at(self.side, float(deg).hex())
         for link, points in _node_positions(rig, self.elements, len(self.nodes["extender"]) - 1).items():
             for node, x in zip(self.nodes[link][-len(points):], points):
                 self.mbs.SetNodeParameter(node, "referenceCoordinates", [float(x[0]), float(x[1]), 0.0])
@@ -385,6 +386,13 @@ class Model:
                 self.mbs.SetNodeParameter(node, "initialVelocities", [scale * v for v in data["initialVelocities"]])
         om2 = scale * self.rigid.om2
         self.mbs.SetObjectParameter(self.crank_constraint, "offsetUserFunction", lambda mbs, t, item, offset: om2 * t)
+
+
+@functools.lru_cache(maxsize=4096)
+def _rigid_at(side: str, deg_hex: str) -> Rigid:
+    """``rigid`` at one crank angle, given as ``float.hex`` (so that -0.0 is not 0.0), cached:
+    the scene solves the structure at the same angles for many meshes and shear models."""
+    return rigid(side, [float.fromhex(deg_hex)])
 
 
 def rigid_path_point(side: str, deg) -> np.ndarray:
