@@ -169,6 +169,22 @@ def test_the_model_carries_the_loads_it_lists(case):
     assert len(model.loads) == {1: 1, 2: 3, 3: mb.CASE3_NODES}[case]
 
 
+@pytest.mark.parametrize("case", mb.CASES)
+def test_a_moved_model_is_the_model_built_there(case):
+    """``Model.move`` (the scene moves one frozen model from angle to angle): its Jacobian, load
+    vector and loads equal, bit for bit, those of the model built at the new angle; a driven model
+    cannot be moved."""
+    options = dict(masses="lumped", load_scale=2.0, coupler_load_at="B")
+    model = mb.build("cognate", 50.0, case, 3, **options)
+    model.move(200.0)
+    built = mb.build("cognate", 200.0, case, 3, **options)
+    for got, expected in zip(model._static_system(), built._static_system()):
+        np.testing.assert_array_equal(got, expected)
+    assert [(int(n), f) for n, f in model.loads] == [(int(n), f) for n, f in built.loads] and model.deg == 200.0
+    with pytest.raises(ValueError, match="frozen"):
+        mb.build("source", 30.0, 1, 2, mode="driven").move(40.0)
+
+
 @pytest.mark.parametrize("side", mb.SIDES)
 def test_the_port_s_accelerations_are_its_positions_differentiated(side):
     """The loads come from the port's accelerations: they are the second derivatives of its own

@@ -128,3 +128,21 @@ def test_the_study_counts_a_stop_of_the_printed_newton_as_the_thesis_does():
         assert np.array_equal(a.status[:end + 1], b.status[:end + 1])
         np.testing.assert_array_equal(a.q[:end], b.q[:end])
         assert c.stopped.all() == (b.stopped.all() and not b.dfp.any())
+
+
+def test_the_study_takes_the_grid_s_runs_where_they_restarted_nowhere():
+    """A grid run (branch checked, going on after a failure) that restarted nowhere gives the
+    verdicts of the study's own pass (unchecked, stopping at the first failure); one that
+    restarted is solved again."""
+    frame = gsc.sweep(a4=(0.0, 10.0), alpha4_deg=(270.0,), s1=(0.0, 3.5, 6.0))
+    known = example._grid_statuses(frame)
+    th = np.radians(gsc.CRANK_DEG)
+    verdicts = set()
+    for (a4, alpha4, s1), status in known.items():
+        own = position.positions(GscInputs(a4=a4, alpha4_deg=alpha4, s1=s1), th, use_dfp=True,
+                                 stop_at_failure=True, branch=None)
+        verdicts.add(example._port_verdicts(status))
+        assert example._port_verdicts(status) == example._port_verdicts(own.status)
+    assert len(known) == 6 and verdicts == {(True, True), (False, True), (False, False)}
+    restarted = frame.assign(status=np.where(frame.index == 5, position.RESTARTED, frame.status))
+    assert len(example._grid_statuses(restarted)) == 5

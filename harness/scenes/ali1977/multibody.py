@@ -60,6 +60,7 @@ time in s; crank angles ``deg`` in degrees.
 """
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass, field
 
@@ -251,6 +252,8 @@ class Model:
     rigid: Rigid
     settings: object = None
     load_numbers: list = field(default_factory=list)
+    #: build's load arguments (n_nodes, coupler_load_at, lumped, load_scale), for ``move``
+    load_options: dict = field(default_factory=dict)
 
     def simulation_settings(self):
         """Exudyn SimulationSettings for deterministic solves (one thread, dense solver); Newton's
@@ -266,6 +269,23 @@ class Model:
         ss.timeIntegration.verboseMode = 0
         ss.solution.file.write = False
         return ss
+
+    def move(self, deg: float) -> None:
+        """A frozen model moved to the crank angle ``deg`` (deg): its nodes' reference positions and
+        its loads set to the rigid linkage's there, and reassembled: the model ``build`` makes at
+        ``deg`` (the same numbers, without adding every item again)."""
+        if self.mode != "frozen":
+            raise ValueError("move needs the frozen structure (mode='frozen')")
+        rig = _rigid_at(self.side, float(deg).hex())
+        for link, points in _node_positions(rig, self.elements, len(self.nodes["extender"]) - 1).items():
+            for node, x in zip(self.nodes[link][-len(points):], points):
+                self.mbs.SetNodeParameter(node, "referenceCoordinates", [float(x[0]), float(x[1]), 0.0])
+        self.loads = [(node, force) for (node, _), force in zip(self.loads, _load_values(rig, self.case,
+                                                                                        **self.load_options))]
+        for number, (_, (fx, fy)) in zip(self.load_numbers, self.loads):
+            self.mbs.SetLoadParameter(number, "loadVector", [fx, fy, 0.0])
+        self.mbs.Assemble()
+        self.deg, self.rigid = float(deg), rig
 
     def _residuals(self, solver, settings) -> tuple[np.ndarray, np.ndarray]:
         """Exudyn's static residual at the current state with the loads, and without them (the
@@ -368,6 +388,13 @@ class Model:
         self.mbs.SetObjectParameter(self.crank_constraint, "offsetUserFunction", lambda mbs, t, item, offset: om2 * t)
 
 
+@functools.lru_cache(maxsize=4096)
+def _rigid_at(side: str, deg_hex: str) -> Rigid:
+    """``rigid`` at one crank angle, given as ``float.hex`` (so that -0.0 is not 0.0), cached:
+    the scene solves the structure at the same angles for many meshes and shear models."""
+    return rigid(side, [float.fromhex(deg_hex)])
+
+
 def rigid_path_point(side: str, deg) -> np.ndarray:
     """The rigid path point (2, N) in inches, source frame, at the crank angles ``deg`` (deg):
     the corrected port's kinematics (subtract it from ``Model.path_point`` for the deflection)."""
@@ -377,6 +404,26 @@ def rigid_path_point(side: str, deg) -> np.ndarray:
 def crank_angle(rig: Rigid, t: float, deg0: float) -> float:
     """The crank angle (deg) at time ``t`` (s) of a run driven from ``deg0`` at the port's speed."""
     return deg0 + math.degrees(rig.om2 * t)
+
+
+def _node_positions(rig: Rigid, elements: int, ext_elements: int) -> dict:
+    """Where each link's nodes lie (in, source frame) at the rigid linkage's (one) angle, with
+    ``elements`` per link (the extender ``ext_elements``): {link: positions from its first
+    joint}, the extender's without its first (the coupler's, at A)."""
+    o2, a, b, o4, p = (v[:, 0] for v in (rig.o2, rig.a, rig.b, rig.o4, rig.p))
+
+    def along(start, end, count, first=True):
+        return [start] * first + [start + (end - start) * (k / count) for k in range(1, count + 1)]
+    return {"crank": along(o2, a, elements), "coupler": along(a, b, elements),
+            "extender": along(a, p, ext_elements, first=False), "follower": along(b, o4, elements)}
+
+
+def _load_values(rig: Rigid, case: int, n_nodes: int, coupler_load_at: str, lumped: str,
+                 load_scale: float) -> list:
+    """The case's loads (``point_loads``) at the rigid linkage's one angle, each times
+    ``load_scale``: [(fx, fy)] in lbf, in ``point_loads``' order."""
+    return [(load_scale * float(force[0, 0]), load_scale * float(force[1, 0]))
+            for force in point_loads(rig, case, n_nodes, coupler_load_at, lumped).values()]
 
 
 def build(side: str, deg: float, case: int = 1, elements: int = 8, *, mode: str = "frozen",
@@ -405,6 +452,7 @@ def build(side: str, deg: float, case: int = 1, elements: int = 8, *, mode: str 
         raise ValueError(f"elements must be a positive integer, got {elements!r}")
     rig = rigid(side, [deg])
     applied = point_loads(rig, case, n_nodes, coupler_load_at, lumped)          # checks case
+    load_options = dict(n_nodes=n_nodes, coupler_load_at=coupler_load_at, lumped=lumped, load_scale=load_scale)
     sc = exu.SystemContainer()
     mbs = sc.AddSystem()
     sec = EXAMPLE.section
@@ -432,10 +480,13 @@ def build(side: str, deg: float, case: int = 1, elements: int = 8, *, mode: str 
         return mbs.AddNode(NodeRigidBody2D(referenceCoordinates=[float(x[0]), float(x[1]), 0.0],
                                            initialVelocities=velocity(x, link) if driven else [0.0, 0.0, 0.0]))
 
-    def add_link(link, start, end, length, count, first=None):
-        nodes = [first if first is not None else add_node(start, link)]
-        nodes += [add_node(start + (end - start) * (k / count), link) for k in range(1, count + 1)]
-        h = length / count
+    l1, l2, l3, l4 = rig.lengths
+    ext_elements = elements if case != 3 else math.lcm(int(elements), int(n_nodes))
+    points = _node_positions(rig, int(elements), ext_elements)
+
+    def add_link(link, length, first=None):
+        nodes = ([] if first is None else [first]) + [add_node(x, link) for x in points[link]]
+        h = length / (len(nodes) - 1)
         shear = shear_factor * ea if shear_per_element is None else shear_per_element * 12.0 * ei / (h * h)
         for n0, n1 in zip(nodes[:-1], nodes[1:]):
             mbs.AddObject(ObjectBeamGeometricallyExact2D(
@@ -443,12 +494,10 @@ def build(side: str, deg: float, case: int = 1, elements: int = 8, *, mode: str 
                 bendingStiffness=ei, axialStiffness=ea, shearStiffness=shear, includeReferenceRotations=False))
         return nodes
 
-    l1, l2, l3, l4 = rig.lengths
-    ext_elements = elements if case != 3 else math.lcm(int(elements), int(n_nodes))
-    nodes = {"crank": add_link("crank", o2, a, l1, elements)}
-    nodes["coupler"] = add_link("coupler", a, b, l3, elements)
-    nodes["extender"] = add_link("extender", a, p, l2, ext_elements, first=nodes["coupler"][0])
-    nodes["follower"] = add_link("follower", b, o4, l4, elements)
+    nodes = {"crank": add_link("crank", l1)}
+    nodes["coupler"] = add_link("coupler", l3)
+    nodes["extender"] = add_link("extender", l2, first=nodes["coupler"][0])
+    nodes["follower"] = add_link("follower", l4)
 
     ground = mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=mbs.AddNode(NodePointGround()), coordinate=0))
 
@@ -477,8 +526,7 @@ def build(side: str, deg: float, case: int = 1, elements: int = 8, *, mode: str 
             where[key] = nodes["extender"][int(round(key[1] / step))]
     load_list, load_numbers = [], []
     if loads if loads is not None else not driven:
-        for key, force in applied.items():
-            fx, fy = load_scale * float(force[0, 0]), load_scale * float(force[1, 0])
+        for key, (fx, fy) in zip(applied, _load_values(rig, case, **load_options)):
             load_numbers.append(mbs.AddLoad(LoadForceVector(
                 markerNumber=mbs.AddMarker(MarkerNodePosition(nodeNumber=where[key])), loadVector=[fx, fy, 0.0])))
             load_list.append((where[key], (fx, fy)))
@@ -487,7 +535,7 @@ def build(side: str, deg: float, case: int = 1, elements: int = 8, *, mode: str 
             mbs.AddObject(ObjectMassPoint2D(nodeNumber=node, mass=m))
     mbs.Assemble()
     model = Model(side, case, float(deg), mode, int(elements), sc, mbs, nodes, nodes["extender"][-1], root,
-                  crank_constraint, load_list, rig, load_numbers=load_numbers)
+                  crank_constraint, load_list, rig, load_numbers=load_numbers, load_options=load_options)
     model.settings = model.simulation_settings()
     return model
 
@@ -513,9 +561,15 @@ def quasi_static(side: str, case: int, deg, elements: int = 8, n_nodes: int = CA
                  shear_factor: float = SHEAR_FACTOR, coupler_load_at: str = "A",
                  shear_per_element: float | None = None, lumped: str = "axial") -> dict:
     """Exudyn's linear quasi-static path-point deflections over ``deg`` (deg): ``dx``, ``dy`` (in,
-    source frame), ``rot`` (rad), one frozen model per angle."""
-    rows = np.array([build(side, float(d), case, elements, n_nodes=n_nodes, shear_factor=shear_factor,
-                           coupler_load_at=coupler_load_at, masses="none",
-                           shear_per_element=shear_per_element, lumped=lumped).linear_deflection()
-                     for d in np.atleast_1d(deg)])
+    source frame), ``rot`` (rad), of the frozen model built at the first angle and moved to each
+    (``Model.move``)."""
+    deg = np.atleast_1d(deg)
+    model = build(side, float(deg[0]), case, elements, n_nodes=n_nodes, shear_factor=shear_factor,
+                  coupler_load_at=coupler_load_at, masses="none", shear_per_element=shear_per_element, lumped=lumped)
+    rows = []
+    for k, d in enumerate(deg):
+        if k:
+            model.move(float(d))
+        rows.append(model.linear_deflection())
+    rows = np.array(rows)
     return {"dx": rows[:, 0], "dy": rows[:, 1], "rot": rows[:, 2]}

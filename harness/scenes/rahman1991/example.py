@@ -150,20 +150,47 @@ def legacy_failure(inputs: GscInputs) -> tuple[str, float] | None:
     return None
 
 
-def convergence_study() -> pd.DataFrame:
+def _port_verdicts(status: np.ndarray) -> tuple[bool, bool]:
+    """(Newton alone, Newton + DFP) converge: the statuses of a pass are all stops, and none
+    after the DFP fallback."""
+    stopped = bool(np.isin(status, gsc_position.STOPPED).all())
+    return stopped and not np.char.startswith(status.astype(str), gsc_position.DFP_THEN_NEWTON).any(), stopped
+
+
+def _grid_statuses(printed: pd.DataFrame | None) -> dict:
+    """{(a4, alpha4_deg, s1): statuses} of the grid's printed runs (``grid``) that restarted
+    nowhere from the closed form.  Such a run is the study's pass (``convergence_study``) until
+    its first failure: the same Newton from the same answers, the branch check only relabelling
+    stops (a stop on the other branch, or one it failed to restart, is a stop there too); and a
+    failure anywhere fails both verdicts of both."""
+    if printed is None:
+        return {}
+    found = {key: rows.to_numpy() for key, rows in printed.groupby(["a4", "alpha4_deg", "s1"]).status}
+    return {key: status for key, status in found.items() if not (status == gsc_position.RESTARTED).any()}
+
+
+def convergence_study(printed: pd.DataFrame | None = None) -> pd.DataFrame:
     """Which configurations converge over a full turn (0..360 step 1, stopping at the first
     failure as the thesis's program does), per engine; and whether each one assembles.
 
     "Converge" is the thesis's word: the printed Newton stops (every |Delta| <= 1e-7) at every
     position, closed loop or not (``position.STOPPED``; off the plane the loop cannot close,
     D085), unchecked (``branch=None``).  One pass with the DFP fallback: until its first Newton
-    failure it is the pass without it, so that pass converges where this one never ran DFP."""
+    failure it is the pass without it, so that pass converges where this one never ran DFP.
+    ``printed``: the grid by the printed method (``grid``), whose configurations are read from
+    it where ``_grid_statuses`` holds them, not solved again."""
     configs = [GscInputs(a4=a4, s1=s1) for a4, s1 in itertools.product(gsc.GRID_A4, STUDY_S1)]
     configs += [GscInputs(a4=20.0, alpha4_deg=al) for al in STUDY_ALPHA4]
     th = np.radians(gsc.CRANK_DEG)
-    runs = gsc_position.positions_batch(configs, th, use_dfp=True, stop_at_failure=True, branch=None)
-    verdicts = {"port Newton (1 deg steps)": [bool(r.stopped.all() and not r.dfp.any()) for r in runs],
-                "port Newton + DFP (1 deg steps)": [bool(r.stopped.all()) for r in runs]}
+    known = _grid_statuses(printed)
+    keys = [(x.a4, x.alpha4_deg, x.s1) for x in configs]
+    todo = list(dict.fromkeys(key for key in keys if key not in known))
+    runs = gsc_position.positions_batch([GscInputs(a4=a4, alpha4_deg=al, s1=s1) for a4, al, s1 in todo], th,
+                                        use_dfp=True, stop_at_failure=True, branch=None)
+    port = {**{key: _port_verdicts(status) for key, status in known.items()},
+            **{key: _port_verdicts(run.status) for key, run in zip(todo, runs)}}
+    verdicts = {"port Newton (1 deg steps)": [port[key][0] for key in keys],
+                "port Newton + DFP (1 deg steps)": [port[key][1] for key in keys]}
     verdicts["legacy 1996 build (10 deg steps, REAL*4)"] = [legacy_failure(x) is None for x in configs]
     rows = []
     for k, inputs in enumerate(configs):
@@ -250,7 +277,7 @@ def run(out_dir: Path) -> dict:
     write_csv(diagnostics, target / "diagnostics.csv", "%.6g")
     progress.note(NAME, "convergence study")
     start = time.perf_counter()
-    study = convergence_study()
+    study = convergence_study(frames["port_printed"])
     timings["convergence study"] = time.perf_counter() - start
     study.to_csv(target / "convergence.csv", index=False)
     claims = measure_claims(frames, convergence_limits(study))
