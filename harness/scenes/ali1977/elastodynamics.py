@@ -156,7 +156,7 @@ def exudyn_static(deg: float, elements: int = STATIC_ELEMENTS, load_steps: int =
     return linear, nonlinear, {"linear": stress.exudyn_moments(model, solution), "nonlinear": stress.exudyn_moments(model, state)}
 
 
-@dataclass
+@dataclass(eq=False)
 class SteadyState:
     """A driven run: the path point's deflection (steps, 2) over its last revolution at the crank
     angles ``deg`` (deg), the revolutions run, the largest difference (in) between the last two
@@ -164,7 +164,10 @@ class SteadyState:
     the steady state's period in revolutions (1, 2, or 0: none within MAX_REVOLUTIONS);
     ``failed_at`` the time (s) where Exudyn's Newton iteration diverged (its deflection then NaN),
     NaN where it did not; ``moments`` the links' bending moments over the last revolution
-    (``stress.exudyn_moments``: {member: (steps, its nodes)}, lbf in; None where it diverged)."""
+    (``stress.exudyn_moments``: {member: (steps, its nodes)}, lbf in; None where it diverged);
+    ``end`` its last state (ODE2 coordinates and their velocities, at the start angle: a ``seed``
+    for a neighbouring run; None where it diverged), ``seed_rpm`` the speed of the run it was
+    seeded from (NaN: started undeformed)."""
     rpm: float
     elements: int
     steps: int
@@ -180,30 +183,53 @@ class SteadyState:
     link_mass: float = 0.0
     side: str = "source"
     moments: dict | None = None
+    end: tuple | None = None
+    seed_rpm: float = math.nan
 
 
 def steady_state(rpm: float, elements: int = ELEMENTS, steps: int | None = None, zeta: float = ZETA,
                  start_deg: float = 0.0, link_mass: float = 0.0, side: str = "source",
                  cached: bool = True, periodicity: float = PERIODICITY_IN,
-                 modified_newton: bool = MODIFIED_NEWTON) -> SteadyState:
+                 modified_newton: bool = MODIFIED_NEWTON, seed: SteadyState | None = None) -> SteadyState:
     """``_steady_state``, each run once per process (the bisection and the report share runs);
     ``cached=False`` runs it afresh (the bench times runs)."""
     run = _steady_state if cached else _steady_state.__wrapped__
     return run(float(rpm), int(elements), int(steps or steps_per_rev(rpm)), float(zeta), float(start_deg),
-               float(link_mass), side, float(periodicity), bool(modified_newton))
+               float(link_mass), side, float(periodicity), bool(modified_newton), seed)
+
+
+def _seeded(mbs, seed: SteadyState, rpm: float) -> None:
+    """Start ``mbs`` (assembled, its initial velocities the rigid linkage's at ``rpm``) from
+    ``seed``'s last state instead of undeformed: the seed's deflections (its coordinates, the
+    rotations' whole turns taken off) times (rpm / seed.rpm)^2, as the quasi-static deflection
+    scales, and its velocities' elastic part (beyond the rigid ones) times (rpm / seed.rpm)^3."""
+    exu = multibody.require()
+    q, v, a, ae = (np.array(a, dtype=float) for a in seed.end)
+    ratio, initial = rpm / seed.rpm, exu.ConfigurationType.Initial
+    rigid_v = np.asarray(mbs.systemData.GetODE2Coordinates_t(configuration=initial))
+    rotations = np.zeros(len(q), dtype=bool)
+    for node in range(mbs.systemData.NumberOfNodes()):
+        if mbs.GetNode(node)["nodeType"] == "RigidBody2D":
+            rotations[mbs.GetNodeODE2Index(node) + 2] = True
+    q[rotations] -= 2.0 * math.pi * np.round(q[rotations] / (2.0 * math.pi))
+    mbs.systemData.SetODE2Coordinates(list(q * ratio ** 2), configuration=initial)
+    mbs.systemData.SetODE2Coordinates_t(list(rigid_v + (v - rigid_v / ratio) * ratio ** 3), configuration=initial)
+    mbs.systemData.SetODE2Coordinates_tt(list(a * ratio ** 2), configuration=initial)
+    mbs.systemData.SetAECoordinates(list(ae * ratio ** 2), configuration=initial)
 
 
 @functools.lru_cache(maxsize=64)
 def _steady_state(rpm: float, elements: int, steps: int, zeta: float, start_deg: float,
                   link_mass: float, side: str, periodicity: float = PERIODICITY_IN,
-                  modified_newton: bool = MODIFIED_NEWTON) -> SteadyState:
+                  modified_newton: bool = MODIFIED_NEWTON, seed: SteadyState | None = None) -> SteadyState:
     """The elastodynamic steady state at ``rpm``: the builder's driven linkage (started at
     ``start_deg`` with the rigid linkage's velocities, undeformed), the beams damped
     (``damping_beta(zeta)``), the crank speed set to ``rpm``; Exudyn's generalized-alpha in
     ``steps`` steps per revolution, revolution after revolution until two successive ones (or,
     a period-2 motion, the last and the one two before) agree to PERIODICITY_IN.  ``link_mass``:
     the beams' mass as a fraction of the links' own (0: Case I's massless links); ``side`` the
-    source four-bar or its cognate."""
+    source four-bar or its cognate; ``seed`` a converged run of the same model at a neighbouring
+    speed to start from (``_seeded``) instead of undeformed: fewer revolutions to the same test."""
     exu = multibody.require()
     model = mb.build(side, float(start_deg), CASE, elements, mode="driven", shear_per_element=SHEAR_PER_ELEMENT)
     model.damp(damping_beta(zeta))
@@ -213,7 +239,7 @@ def _steady_state(rpm: float, elements: int, steps: int, zeta: float, start_deg:
     mbs, node = model.mbs, model.path_node
     positions: list = []
     states = collections.deque(maxlen=2 * steps)         # (step, ODE2 coordinates): the last two revolutions
-    found = {"period": 0, "diffs": (math.inf, math.inf)}
+    found = {"period": 0, "diffs": (math.inf, math.inf), "end": None}
 
     def each_step(mbs_, t):
         positions.append(mbs_.GetNodeOutput(node, exu.OutputVariableType.Position)[:2])
@@ -225,11 +251,17 @@ def _steady_state(rpm: float, elements: int, steps: int, zeta: float, start_deg:
             found["diffs"] = (one, two)
             if one < periodicity or two < periodicity:
                 found["period"] = 1 if one < periodicity else 2
+                found["end"] = (states[-1][1], mbs_.systemData.GetODE2Coordinates_t(),
+                                mbs_.systemData.GetODE2Coordinates_tt(), mbs_.systemData.GetAECoordinates())   # at the start angle
                 return False
         return True
 
     mbs.SetPreStepUserFunction(each_step)
     mbs.Assemble()
+    if seed is not None:
+        if seed.end is None or (seed.side, seed.elements, seed.start_deg, seed.link_mass) != (side, elements, start_deg, link_mass):
+            raise ValueError(f"steady_state: the seed (the run at {seed.rpm:g} rpm) is no converged run of this model")
+        _seeded(mbs, seed, rpm)
     period_s = 60.0 / rpm
     settings = model.settings
     settings.linearSolver.solverType = exu.LinearSolverType.EigenSparse
@@ -258,7 +290,8 @@ def _steady_state(rpm: float, elements: int, steps: int, zeta: float, start_deg:
     last = np.asarray(positions[n - steps:n]) - rigid_path_point(deg, rpm, side)
     one, two = found["diffs"]
     return SteadyState(rpm, elements, steps, zeta, start_deg, deg, last, n // steps, one, two, found["period"],
-                       link_mass=link_mass, side=side, moments=stress.exudyn_moments(model, [q for k, q in states if n - steps <= k < n]))
+                       link_mass=link_mass, side=side, moments=stress.exudyn_moments(model, [q for k, q in states if n - steps <= k < n]),
+                       end=found["end"], seed_rpm=math.nan if seed is None else seed.rpm)
 
 
 # --- the study ------------------------------------------------------------------------------------
@@ -335,7 +368,7 @@ def _row(kind: str, run: SteadyState) -> dict:
             "zeta": run.zeta, "link_mass": run.link_mass, "start_deg": run.start_deg, "revolutions": run.revolutions,
             "period": run.period, "periodicity_in": run.periodicity, "period2_in": run.period2,
             "quasi_static_peak": peak_qs, "dynamic_peak": peak, "max_error": error, "error_over_peak": error / peak_qs,
-            "newton_diverged_at_s": run.failed_at}
+            "newton_diverged_at_s": run.failed_at, "seed_rpm": run.seed_rpm}
 
 
 #: the 300 rpm steady states: (study, side, zeta, link mass); the massless links' run at ZETA_LOW is
@@ -371,9 +404,10 @@ LIMITS = (("source", ZETA, 0.0), ("cognate", ZETA, 0.0), ("source", ZETA, LINK_M
 def limits(linear: pd.DataFrame) -> tuple[pd.DataFrame, pd.DataFrame]:
     """Where the quasi-static answer's error passes ERROR_LEVEL of its peak: per LIMITS in Exudyn
     (``speed_limit`` from the thesis's structure's limit: a few runs), and the thesis's structure
-    at every damping ratio of ZETAS.  Returns (the limits: side, zeta, link mass, model, rpm; every
-    Exudyn run the search made)."""
-    rows, runs = [], []
+    at every damping ratio of ZETAS; each Exudyn run after a search's first seeded from the
+    nearest converged one (``nearest``).  Returns (the limits: side, zeta, link mass, model, rpm;
+    every Exudyn run the search made; those runs by (side, zeta, link mass))."""
+    rows, runs, searched = [], [], {}
     for side in SIDES:
         for zeta in ZETAS:
             rows.append({"side": side, "zeta": zeta, "link_mass": 0.0, "model": "thesis's structure, dynamic",
@@ -381,16 +415,21 @@ def limits(linear: pd.DataFrame) -> tuple[pd.DataFrame, pd.DataFrame]:
     for side, zeta, link_mass in LIMITS:
         progress.note(NAME, f"limit speed: {side}, zeta {zeta:g}, link mass {link_mass:g}")
         guess = next(r["limit_rpm"] for r in rows if r["side"] == side and r["zeta"] == zeta)
-        tried = []
+        done = searched[side, zeta, link_mass] = []
 
         def ratio(rpm):
-            row = _row("limit search", steady_state(rpm, zeta=zeta, link_mass=link_mass, side=side))
-            tried.append(row)
-            return row["error_over_peak"]
+            done.append(steady_state(rpm, zeta=zeta, link_mass=link_mass, side=side, seed=nearest(done, rpm)))
+            runs.append(_row("limit search", done[-1]))
+            return runs[-1]["error_over_peak"]
         rows.append({"side": side, "zeta": zeta, "link_mass": link_mass, "model": "Exudyn",
                      "limit_rpm": speed_limit(ratio, guess)})
-        runs += tried
-    return pd.DataFrame(rows), pd.DataFrame(runs).sort_values(["side", "zeta", "link_mass", "rpm"], ignore_index=True)
+    return (pd.DataFrame(rows), pd.DataFrame(runs).sort_values(["side", "zeta", "link_mass", "rpm"], ignore_index=True),
+            searched)
+
+
+def nearest(runs: list[SteadyState], rpm: float) -> SteadyState | None:
+    """The converged run of ``runs`` nearest ``rpm`` (the seed of a run there), None if none."""
+    return min((r for r in runs if r.end is not None), key=lambda r: abs(math.log(r.rpm / rpm)), default=None)
 
 
 def limit_of(table: pd.DataFrame, side: str = "source", zeta: float = ZETA, link_mass: float = 0.0,
@@ -401,11 +440,13 @@ def limit_of(table: pd.DataFrame, side: str = "source", zeta: float = ZETA, link
     return float(one["limit_rpm"].iloc[0])
 
 
-def at_limit(table: pd.DataFrame, side: str) -> "SteadyState":
-    """The Exudyn steady state (ZETA, massless) at ``side``'s limit speed (``limits``' table): the
-    error's harmonics and the stresses there, at the limit itself rather than at the search's
-    nearest run (which the search may leave about 1 % of the speed away)."""
-    return steady_state(limit_of(table, side), side=side)
+def at_limit(table: pd.DataFrame, side: str, searched: dict) -> "SteadyState":
+    """The Exudyn steady state (ZETA, massless) at ``side``'s limit speed (``limits``' table and
+    runs, the nearest seeding it): the error's harmonics and the stresses there, at the limit
+    itself rather than at the search's nearest run (which the search may leave about 1 % of the
+    speed away)."""
+    rpm = limit_of(table, side)
+    return steady_state(rpm, side=side, seed=nearest(searched[side, ZETA, 0.0], rpm))
 
 
 def error_harmonics(run: SteadyState, count: int = ERROR_HARMONICS) -> pd.DataFrame:
@@ -450,8 +491,8 @@ def run(out_dir: Path) -> dict:
     cycle = pd.concat(cycles, ignore_index=True)
     progress.note(NAME, "linear dynamics, every 10 rev/min")
     linear = linear_sweep()
-    limit, limit_runs = limits(linear)
-    at = [at_limit(limit, side) for side in SIDES]
+    limit, limit_runs, searched = limits(linear)
+    at = [at_limit(limit, side, searched) for side in SIDES]
     spectrum = error_harmonics(at[0])
     summary = summarise(freq, freq_port, static, runs, limit, spectrum, linear)
     stresses = stress.table(static, [steady_state(RPM, side=side) for side in SIDES] + at,
