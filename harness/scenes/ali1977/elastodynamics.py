@@ -404,8 +404,8 @@ LIMITS = (("source", ZETA, 0.0), ("cognate", ZETA, 0.0), ("source", ZETA, LINK_M
 def limits(linear: pd.DataFrame) -> tuple[pd.DataFrame, pd.DataFrame]:
     """Where the quasi-static answer's error passes ERROR_LEVEL of its peak: per LIMITS in Exudyn
     (``speed_limit`` from the thesis's structure's limit: a few runs), and the thesis's structure
-    at every damping ratio of ZETAS; each Exudyn run after a search's first seeded from the
-    nearest converged one (``nearest``).  Returns (the limits: side, zeta, link mass, model, rpm;
+    at every damping ratio of ZETAS; each Exudyn run seeded from the nearest converged run of the
+    same model (``nearest``: the same damping first), a search's first, if none, undeformed.  Returns (the limits: side, zeta, link mass, model, rpm;
     every Exudyn run the search made; those runs by (side, zeta, link mass))."""
     rows, runs, searched = [], [], {}
     for side in SIDES:
@@ -418,7 +418,8 @@ def limits(linear: pd.DataFrame) -> tuple[pd.DataFrame, pd.DataFrame]:
         done = searched[side, zeta, link_mass] = []
 
         def ratio(rpm):
-            done.append(steady_state(rpm, zeta=zeta, link_mass=link_mass, side=side, seed=nearest(done, rpm)))
+            model = [r for (s_, _, m), found in searched.items() if (s_, m) == (side, link_mass) for r in found]
+            done.append(steady_state(rpm, zeta=zeta, link_mass=link_mass, side=side, seed=nearest(model, rpm, zeta)))
             runs.append(_row("limit search", done[-1]))
             return runs[-1]["error_over_peak"]
         rows.append({"side": side, "zeta": zeta, "link_mass": link_mass, "model": "Exudyn",
@@ -427,9 +428,11 @@ def limits(linear: pd.DataFrame) -> tuple[pd.DataFrame, pd.DataFrame]:
             searched)
 
 
-def nearest(runs: list[SteadyState], rpm: float) -> SteadyState | None:
-    """The converged run of ``runs`` nearest ``rpm`` (the seed of a run there), None if none."""
-    return min((r for r in runs if r.end is not None), key=lambda r: abs(math.log(r.rpm / rpm)), default=None)
+def nearest(runs: list[SteadyState], rpm: float, zeta: float = ZETA) -> SteadyState | None:
+    """The converged run of ``runs`` nearest ``rpm``, at ``zeta`` if any is (the seed of a run
+    there), None if none."""
+    return min((r for r in runs if r.end is not None), key=lambda r: (r.zeta != zeta, abs(math.log(r.rpm / rpm))),
+               default=None)
 
 
 def limit_of(table: pd.DataFrame, side: str = "source", zeta: float = ZETA, link_mass: float = 0.0,

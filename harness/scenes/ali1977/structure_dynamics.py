@@ -108,12 +108,14 @@ def linear_periodic(rpms, zeta: float, steps: int = LINEAR_STEPS, side: str = "s
     each of ``rpms`` (S,), K = ``port_stiffness``, a the port's rigid acceleration, beta =
     ``damping_beta(zeta)``; the trapezoidal rule (Newmark's average acceleration) in ``steps``
     steps per revolution, and its periodic solution: the fixed point of the revolution's affine
-    map.  Returns (the deflections (S, steps, 2) at deg = 360 k / steps, the map's spectral
+    map.  The load at each speed is RPM's times (rpm / RPM)^2 (at constant crank speed every
+    rigid acceleration scales so; equal to the port's at that speed to rounding).  Returns (the deflections (S, steps, 2) at deg = 360 k / steps, the map's spectral
     radius (S,): how fast a start-up transient dies per revolution)."""
     rpms = np.atleast_1d(np.asarray(rpms, dtype=float))
     deg = np.arange(steps) * 360.0 / steps
     stiffness = port_stiffness(deg, side)
-    load = np.stack([-MASS * (lambda mech, turn: mech.acc @ turn.T)(*_mechanics(deg, side, r)) for r in rpms])  # (S, N, 2)
+    mech, turn = _mechanics(deg, side)
+    load = -MASS * (mech.acc @ turn.T) * ((rpms / RPM) ** 2)[:, None, None]         # (S, N, 2)
     beta, eye = damping_beta(zeta), np.eye(2)
     h = (60.0 / rpms / steps)[:, None, None, None]                                # (S, 1, 1, 1)
     k0 = np.broadcast_to(stiffness / MASS, (len(rpms), steps, 2, 2))              # step i's start
@@ -191,6 +193,14 @@ def speed_limit(ratio, guess: float, level: float = ERROR_LEVEL) -> float:
                            f"from {guess:g} rpm")
 
 
+def _scaled_quasi_static(rpms, side: str):
+    """(k, the quasi-static deflection (LINEAR_STEPS, 2), in, at rpms[k] over ``linear_periodic``'s
+    angles): RPM's times (rpm / RPM)^2 (the load, and so the linear deflection, scales so; the
+    port's at that speed to rounding), one port call for every speed."""
+    qs = quasi_static(np.arange(LINEAR_STEPS) * 360.0 / LINEAR_STEPS, RPM, side)
+    return ((k, qs * (rpm / RPM) ** 2) for k, rpm in enumerate(rpms))
+
+
 LINEAR_LIMIT_STEP_RPM = 0.25
 
 
@@ -201,10 +211,8 @@ def linear_limit(sweep: pd.DataFrame, side: str, zeta: float) -> float:
     rows = sweep[(sweep["side"] == side) & (sweep["zeta"] == zeta)]
     guess = crossing(rows["rpm"], rows["error_over_peak"])
     rpms = np.arange(guess * (1.0 - LIMIT_BELOW), guess * (1.0 + LIMIT_ABOVE), LINEAR_LIMIT_STEP_RPM)
-    deg = np.arange(LINEAR_STEPS) * 360.0 / LINEAR_STEPS
     out, _ = linear_periodic(rpms, zeta, side=side)
-    ratio = [(lambda peak_qs, _, error: error / peak_qs)(*error_of(out[k], quasi_static(deg, rpm, side)))
-             for k, rpm in enumerate(rpms)]
+    ratio = [(lambda peak_qs, _, error: error / peak_qs)(*error_of(out[k], qs)) for k, qs in _scaled_quasi_static(rpms, side)]
     return crossing(rpms, ratio)
 
 
@@ -212,14 +220,14 @@ def linear_sweep() -> pd.DataFrame:
     """The linear dynamics of the thesis's structure at every LINEAR_RPM, per side, for ZETA,
     ZETA_LOW and ZETA_LOWEST: the peak quasi-static deflection, the dynamic peak, the quasi-static answer's error
     over its peak, and how much of a start-up transient is left after a revolution."""
-    deg = np.arange(LINEAR_STEPS) * 360.0 / LINEAR_STEPS
     frames = []
     for side in SIDES:
         for zeta in (ZETA, ZETA_LOW, ZETA_LOWEST):
             out, decay = linear_periodic(LINEAR_RPM, zeta, side=side)
             rows = []
-            for k, rpm in enumerate(LINEAR_RPM):
-                peak_qs, peak, error = error_of(out[k], quasi_static(deg, rpm, side))
+            for k, qs in _scaled_quasi_static(LINEAR_RPM, side):
+                rpm = LINEAR_RPM[k]
+                peak_qs, peak, error = error_of(out[k], qs)
                 rows.append({"side": side, "zeta": zeta, "rpm": rpm, "quasi_static_peak": peak_qs, "dynamic_peak": peak,
                              "error_over_peak": error / peak_qs, "transient_left_per_rev": decay[k]})
             frames.append(pd.DataFrame(rows))
