@@ -47,7 +47,7 @@ import pandas as pd
 
 from ....port.ali1977.case1 import source_mechanics
 from ....port.ali1977.quirks import CORRECTED
-from ... import multibody, progress
+from ... import blas, multibody, progress
 from ...csv_output import FULL_PRECISION, write_csv
 from ...scene import ReportScene
 from . import multibody as mb, stress
@@ -473,8 +473,15 @@ def run(out_dir: Path) -> dict:
     300 rpm steady states: Case I, the links' own mass, the damping), limits.csv (the limit speeds),
     limit_runs.csv (Exudyn's runs that found them), error_harmonics.csv (the error's harmonics at
     the limit), linear_sweep.csv (the thesis's structure with the deflection's inertia, every 10
-    rev/min), stress.csv (the links' peak bending stresses, ``stress.table``), summary.csv, elastodynamics.png, cycle.png, report.md."""
+    rev/min), stress.csv (the links' peak bending stresses, ``stress.table``), summary.csv, elastodynamics.png, cycle.png, report.md.
+    BLAS on one thread (``blas.one_thread``: its many small solves)."""
     multibody.require()
+    with blas.one_thread():
+        return _run(out_dir)
+
+
+def _run(out_dir: Path) -> dict:
+    """``run``'s work."""
     target = out_dir / NAME
     target.mkdir(parents=True, exist_ok=True)
     progress.note(NAME, "frozen frequencies")
