@@ -7,7 +7,7 @@ rev/min, frequencies in Hz, times in seconds.
 from __future__ import annotations
 
 from ...quantities import DIFF, Quantity as Q
-from .elastodynamics import FREQUENCY_ELEMENTS, LINK_MASS, QUASI_STATIC_RPM, STATIC_ELEMENTS
+from .elastodynamics import FREQUENCY_ELEMENTS, LINK_MASS, QUASI_STATIC_RPM
 from .multibody import SHEAR_FACTOR
 from .quasi_static import EB_ELEMENTS, PAIR
 from .structure_dynamics import DAMPING_HZ, ERROR_LEVEL, RPM, ZETA, ZETA_LOW, ZETA_LOWEST
@@ -146,8 +146,6 @@ MULTIBODY = PORT_DEFLECTION | {
 #: ``structure_dynamics.linear_periodic`` (the port's stiffness, the deflection's inertia kept)
 _RPM, _LOW = f"{RPM:g} rpm", f"zeta {ZETA_LOW:g}"
 _MASS = f"the links given {LINK_MASS:.0%} of their own mass"
-_FREQ_FINE = f"{2 * FREQUENCY_ELEMENTS} elements per link"
-_STATIC_FINE = f"{2 * STATIC_ELEMENTS} elements per link"
 ELASTODYNAMICS = PORT_DEFLECTION | {
     "side": SIDE,
     "crank_deg": Q("crank angle (input-link rotation)", "deg"),
@@ -156,8 +154,6 @@ ELASTODYNAMICS = PORT_DEFLECTION | {
                    "stiffness condensed onto the path point)", "Hz"),
     "f2_exudyn": Q(f"second natural frequency of the frozen linkage, Exudyn ({FREQUENCY_ELEMENTS} elements per link, its "
                    "stiffness condensed onto the path point)", "Hz"),
-    "f1_exudyn_fine": Q(f"first natural frequency of the frozen linkage, Exudyn on {_FREQ_FINE}", "Hz"),
-    "f2_exudyn_fine": Q(f"second natural frequency of the frozen linkage, Exudyn on {_FREQ_FINE}", "Hz"),
     "f1_port": Q("first natural frequency of the frozen linkage, the corrected port's flexibility (beta^T F beta)",
                  "Hz"),
     "f2_port": Q("second natural frequency of the frozen linkage, the corrected port's flexibility (beta^T F beta)",
@@ -171,11 +167,6 @@ ELASTODYNAMICS = PORT_DEFLECTION | {
                       "nonlinear", "in"),
     "nonlinear_dy": Q(f"path-point deflection along y (source frame) under the {_RPM} load, Exudyn geometrically "
                       "nonlinear", "in"),
-    "nonlinear_fine_mesh_change": Q(f"distance the nonlinear static deflection moves on {_STATIC_FINE} (empty at the "
-                                    "angles not checked; summary.csv: the source four-bar's largest over the angles)", "in"),
-    "nonlinear_load_steps_change": Q("distance the nonlinear static deflection moves with twice the load steps (empty "
-                                     "at the angles not checked; summary.csv: the source four-bar's largest over the "
-                                     "angles)", "in"),
     # steady_300.csv: over the last revolution at 300 rpm
     "quasi_static_dx": Q(f"quasi-static path-point deflection along x (source frame) at {_RPM}, the corrected port",
                          "in"),
@@ -220,6 +211,8 @@ ELASTODYNAMICS = PORT_DEFLECTION | {
                          "(linear_sweep.csv: the thesis's structure run dynamically)", ""),
     "link_mass": Q("the beams' mass, a fraction of the links' own (0: massless links, as Case I)", ""),
     "newton_diverged_at_s": Q("time from the start where Exudyn's Newton iteration diverged (empty: it did not)", "s"),
+    "seed_rpm": Q("crank speed of the converged run this run started from, its state scaled to this speed (empty: "
+                  "started undeformed)", "rpm"),
     "transient_left_per_rev": Q("fraction of a start-up transient left after a revolution (the revolution map's "
                                 "spectral radius)", ""),
     # stress.csv (stress.table): per side, model and speed, each link's peak bending moment and stress
@@ -248,18 +241,12 @@ _PER_SIDE = {
     "f2_max_hz": Q("highest second natural frequency of the frozen linkage over the cycle (the corrected port, every "
                    "degree)", "Hz"),
     "f1_exudyn_over_port_max": Q("largest |Exudyn's first natural frequency / the port's - 1|", ""),
-    "f1_exudyn_fine_over_port_max": Q(f"largest |Exudyn's first natural frequency on {_FREQ_FINE} / the port's - 1|",
-                                      ""),
     "quasi_static_peak": Q(f"peak quasi-static path-point deflection over a revolution at {_RPM}, the corrected port",
                            "in"),
     "nonlinear_peak": Q(f"peak geometrically nonlinear static deflection under the {_RPM} load, Exudyn", "in"),
     "nonlinear_gap_max": Q(f"largest |nonlinear static deflection - the port's| under the {_RPM} load", "in"),
     "nonlinear_gap_over_peak": Q(f"largest |nonlinear static deflection - the port's| under the {_RPM} load / the "
                                  "port's peak", ""),
-    "nonlinear_fine_mesh_change": Q(f"largest distance the nonlinear static deflection moves on {_STATIC_FINE}",
-                                    "in"),
-    "nonlinear_load_steps_change": Q("largest distance the nonlinear static deflection moves with twice the load "
-                                     "steps", "in"),
     "exudyn_linear_gap_over_peak": Q(f"largest |Exudyn's linear static deflection - the port's| under the {_RPM} load "
                                      "/ the port's peak", ""),
     "dynamic_peak": Q(f"peak deflection of the elastodynamic steady state at {_RPM}, Exudyn", "in"),

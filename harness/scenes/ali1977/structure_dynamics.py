@@ -108,33 +108,61 @@ def linear_periodic(rpms, zeta: float, steps: int = LINEAR_STEPS, side: str = "s
     each of ``rpms`` (S,), K = ``port_stiffness``, a the port's rigid acceleration, beta =
     ``damping_beta(zeta)``; the trapezoidal rule (Newmark's average acceleration) in ``steps``
     steps per revolution, and its periodic solution: the fixed point of the revolution's affine
-    map.  Returns (the deflections (S, steps, 2) at deg = 360 k / steps, the map's spectral
+    map.  The load at each speed is RPM's times (rpm / RPM)^2 (at constant crank speed every
+    rigid acceleration scales so; equal to the port's at that speed to rounding).  Returns (the deflections (S, steps, 2) at deg = 360 k / steps, the map's spectral
     radius (S,): how fast a start-up transient dies per revolution)."""
     rpms = np.atleast_1d(np.asarray(rpms, dtype=float))
     deg = np.arange(steps) * 360.0 / steps
     stiffness = port_stiffness(deg, side)
-    load = np.stack([-MASS * (lambda mech, turn: mech.acc @ turn.T)(*_mechanics(deg, side, r)) for r in rpms])  # (S, N, 2)
-    beta, eye = damping_beta(zeta), np.eye(2)
+    mech, turn = _mechanics(deg, side)
+    load = -MASS * (mech.acc @ turn.T) * ((rpms / RPM) ** 2)[:, None, None]         # (S, N, 2)
+    beta = damping_beta(zeta)
     h = (60.0 / rpms / steps)[:, None, None, None]                                # (S, 1, 1, 1)
     k0 = np.broadcast_to(stiffness / MASS, (len(rpms), steps, 2, 2))              # step i's start
     k1 = np.roll(k0, -1, axis=1)                                                  # and end
-    ones = np.broadcast_to(eye, k0.shape)
-    # every step at once: u1 - h/2 v1 = u0 + h/2 v0;  v1 + h/2 (beta K1 v1 + K1 u1)/m - h/2 P1/m = v0 + h/2 a0
-    half = np.broadcast_to(h / 2 * eye, k0.shape)
-    lhs = np.block([[ones, -half], [h / 2 * k1, eye + h / 2 * beta * k1]])
-    rhs = np.block([[ones, half], [-h / 2 * k0, eye - h / 2 * beta * k0]])
-    force = np.concatenate([np.zeros(load.shape), h[..., 0] / 2 * (load + np.roll(load, -1, axis=1)) / MASS], axis=2)
-    step_maps, step_shifts = np.linalg.solve(lhs, rhs), np.linalg.solve(lhs, force[..., None])[..., 0]
-    phi, g = np.broadcast_to(np.eye(4), (len(rpms), 4, 4)).copy(), np.zeros((len(rpms), 4))
-    for i in range(steps):
-        phi = step_maps[:, i] @ phi
-        g = np.einsum("sij,sj->si", step_maps[:, i], g) + step_shifts[:, i]
-    x = np.linalg.solve(np.eye(4) - phi, g[..., None])[..., 0]
-    out = np.empty((len(rpms), steps, 2))
-    for i in range(steps):
-        out[:, i] = x[:, :2]
-        x = np.einsum("sij,sj->si", step_maps[:, i], x) + step_shifts[:, i]
-    return out, np.abs(np.linalg.eigvals(phi)).max(axis=1)
+    eye = np.broadcast_to(np.eye(2), k0.shape)
+    # a step: u1 - h/2 v1 = u0 + h/2 v0;  v1 + h/2 (beta K1 v1 + K1 u1) = v0 - h/2 (beta K0 v0 + K0 u0) + h/2 (P0 + P1)/m;
+    # u1 eliminated: (I + (h/2 beta + h^2/4) K1) v1 = that right side - h/2 K1 (u0 + h/2 v0), a 2x2 solve
+    b = eye + (h / 2 * beta + h ** 2 / 4) * k1
+    inv = np.stack([np.stack([b[..., 1, 1], -b[..., 0, 1]], -1), np.stack([-b[..., 1, 0], b[..., 0, 0]], -1)], -2)
+    inv /= (b[..., 0, 0] * b[..., 1, 1] - b[..., 0, 1] * b[..., 1, 0])[..., None, None]
+    from_u = inv @ (-h / 2 * k0 - h / 2 * k1)                                     # v1's dependence on u0
+    from_v = inv @ (eye - h / 2 * beta * k0 - h ** 2 / 4 * k1)                    # and on v0
+    maps = np.concatenate([np.concatenate([eye + h / 2 * from_u, h / 2 * (eye + from_v)], -1),
+                           np.concatenate([from_u, from_v], -1)], -2)             # (S, N, 4, 4)
+    dv = (inv @ (h[..., 0] / 2 * (load + np.roll(load, -1, axis=1)) / MASS)[..., None])[..., 0]
+    out, phi = _periodic_orbit(maps, np.concatenate([h[..., 0] / 2 * dv, dv], -1))
+    return out[..., :2], np.abs(np.linalg.eigvals(phi)).max(axis=1)
+
+
+def _periodic_orbit(maps: np.ndarray, shifts: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The periodic orbit of the affine steps x -> maps[:, i] x + shifts[:, i] (S, N, n, n), (S,
+    N, n): the state before each step (S, N, n), and the revolution's map (S, n, n).  The steps in
+    about sqrt(N) blocks, composed side by side (the loops' lengths about 4 sqrt(N), not 2 N)."""
+    count, n, size = maps.shape[0], maps.shape[1], maps.shape[-1]
+    length = math.ceil(math.sqrt(n))
+    blocks = math.ceil(n / length)
+    pad = blocks * length - n
+    maps = np.concatenate([maps, np.broadcast_to(np.eye(size), (count, pad, size, size))], 1)
+    shifts = np.concatenate([shifts, np.zeros((count, pad, size))], 1)
+    maps, shifts = maps.reshape(count, blocks, length, size, size), shifts.reshape(count, blocks, length, size)
+
+    def step(m, g, x):
+        return np.einsum("...ij,...j->...i", m, x) + g
+    block_map, block_shift = np.broadcast_to(np.eye(size), (count, blocks, size, size)), np.zeros((count, blocks, size))
+    for j in range(length):
+        block_map, block_shift = maps[:, :, j] @ block_map, step(maps[:, :, j], shifts[:, :, j], block_shift)
+    phi, g = np.broadcast_to(np.eye(size), (count, size, size)), np.zeros((count, size))
+    for k in range(blocks):
+        phi, g = block_map[:, k] @ phi, step(block_map[:, k], block_shift[:, k], g)
+    x = np.linalg.solve(np.eye(size) - phi, g[..., None])[..., 0]
+    starts = np.empty((count, blocks, size))
+    for k in range(blocks):
+        starts[:, k], x = x, step(block_map[:, k], block_shift[:, k], x)
+    out = np.empty((count, blocks, length, size))
+    for j in range(length):
+        out[:, :, j], starts = starts, step(maps[:, :, j], shifts[:, :, j], starts)
+    return out.reshape(count, blocks * length, size)[:, :n], phi
 
 
 def error_of(deflection: np.ndarray, reference: np.ndarray) -> tuple[float, float, float]:
@@ -191,6 +219,14 @@ def speed_limit(ratio, guess: float, level: float = ERROR_LEVEL) -> float:
                            f"from {guess:g} rpm")
 
 
+def _scaled_quasi_static(rpms, side: str):
+    """(k, the quasi-static deflection (LINEAR_STEPS, 2), in, at rpms[k] over ``linear_periodic``'s
+    angles): RPM's times (rpm / RPM)^2 (the load, and so the linear deflection, scales so; the
+    port's at that speed to rounding), one port call for every speed."""
+    qs = quasi_static(np.arange(LINEAR_STEPS) * 360.0 / LINEAR_STEPS, RPM, side)
+    return ((k, qs * (rpm / RPM) ** 2) for k, rpm in enumerate(rpms))
+
+
 LINEAR_LIMIT_STEP_RPM = 0.25
 
 
@@ -201,10 +237,8 @@ def linear_limit(sweep: pd.DataFrame, side: str, zeta: float) -> float:
     rows = sweep[(sweep["side"] == side) & (sweep["zeta"] == zeta)]
     guess = crossing(rows["rpm"], rows["error_over_peak"])
     rpms = np.arange(guess * (1.0 - LIMIT_BELOW), guess * (1.0 + LIMIT_ABOVE), LINEAR_LIMIT_STEP_RPM)
-    deg = np.arange(LINEAR_STEPS) * 360.0 / LINEAR_STEPS
     out, _ = linear_periodic(rpms, zeta, side=side)
-    ratio = [(lambda peak_qs, _, error: error / peak_qs)(*error_of(out[k], quasi_static(deg, rpm, side)))
-             for k, rpm in enumerate(rpms)]
+    ratio = [(lambda peak_qs, _, error: error / peak_qs)(*error_of(out[k], qs)) for k, qs in _scaled_quasi_static(rpms, side)]
     return crossing(rpms, ratio)
 
 
@@ -212,14 +246,14 @@ def linear_sweep() -> pd.DataFrame:
     """The linear dynamics of the thesis's structure at every LINEAR_RPM, per side, for ZETA,
     ZETA_LOW and ZETA_LOWEST: the peak quasi-static deflection, the dynamic peak, the quasi-static answer's error
     over its peak, and how much of a start-up transient is left after a revolution."""
-    deg = np.arange(LINEAR_STEPS) * 360.0 / LINEAR_STEPS
     frames = []
     for side in SIDES:
         for zeta in (ZETA, ZETA_LOW, ZETA_LOWEST):
             out, decay = linear_periodic(LINEAR_RPM, zeta, side=side)
             rows = []
-            for k, rpm in enumerate(LINEAR_RPM):
-                peak_qs, peak, error = error_of(out[k], quasi_static(deg, rpm, side))
+            for k, qs in _scaled_quasi_static(LINEAR_RPM, side):
+                rpm = LINEAR_RPM[k]
+                peak_qs, peak, error = error_of(out[k], qs)
                 rows.append({"side": side, "zeta": zeta, "rpm": rpm, "quasi_static_peak": peak_qs, "dynamic_peak": peak,
                              "error_over_peak": error / peak_qs, "transient_left_per_rev": decay[k]})
             frames.append(pd.DataFrame(rows))
