@@ -195,4 +195,4 @@ def overview(_) -> list[str]:
 
 
 #: its own process, beside the tables (it is as long as they are)
-SCENE = ReportScene(name=NAME, title=TITLE, group=NAME, start=4, produce=run, overview=overview)
+SCENE = ReportScene(name=NAME, title=TITLE, group=NAME, start=3, produce=run, overview=overview)

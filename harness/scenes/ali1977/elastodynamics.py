@@ -59,7 +59,7 @@ from .structure_dynamics import (CASE, ERROR_LEVEL, RPM, SIDES, ZETA, ZETA_LOW, 
 NAME = "ali1977-elastodynamics"
 TITLE = "Ali (1977): the quasi-static K.E.D. deflections against the four-bar's elastodynamics (Exudyn)"
 GROUP = NAME
-#: the longest scene: it starts first
+#: one of the two longest groups (with the Ali tables'): it starts first
 START = 0
 #: beam elements per link (every link alike) in the driven runs; the frozen frequencies' (exact
 #: for massless links on any mesh, the shear below; their check on twice as many).  Chosen

@@ -380,4 +380,4 @@ def overview(summary: dict) -> list[str]:
             f"{cognate2['peak']:.3g} in peak"]
 
 
-SCENE = ReportScene(name=NAME, title=TITLE, group=GROUP, start=2, produce=run, overview=overview)
+SCENE = ReportScene(name=NAME, title=TITLE, group=GROUP, start=5, produce=run, overview=overview)

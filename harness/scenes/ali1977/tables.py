@@ -143,8 +143,8 @@ TABLE_STATEMENTS = {
                                                                 "dy": ((), _written("CYY", "200", src_set=True)[1])})),
 }
 
-#: the process the Ali (1977) tables and curves share
-GROUP, START = "ali1977", 1
+#: the process the Ali (1977) tables and curves share (the longest group: it starts first)
+GROUP, START = "ali1977", 0
 COMMON_INPUTS = ("L1=10, L2=10, L3=30, L4=25, L5=30 in; A=0.1963495408 in^2, E=1e7 psi, "
                  "I=0.0030679615 in^4; PI=3.142857143 as printed. ")
 

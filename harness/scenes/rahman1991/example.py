@@ -329,5 +329,5 @@ def overview(result: dict) -> list[str]:
             + [f"| {engine} | " + " | ".join(str(v) for v in row) + " |" for engine, row in verdicts.iterrows()])
 
 
-#: the longest scene starts first; it compiles the Newton kernels the 1996 tables load
-SCENE = ReportScene(name=NAME, title=TITLE, group="rahman1991", start=0, produce=run, overview=overview)
+#: the third longest group; it compiles the Newton kernels the 1996 tables load, so it starts before them
+SCENE = ReportScene(name=NAME, title=TITLE, group="rahman1991", start=1, produce=run, overview=overview)

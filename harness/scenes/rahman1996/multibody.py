@@ -260,4 +260,4 @@ def overview(table: pd.DataFrame) -> list[str]:
     return lines
 
 
-SCENE = ReportScene(name=NAME, title=TITLE, group=NAME, start=2, produce=run, overview=overview)
+SCENE = ReportScene(name=NAME, title=TITLE, group=NAME, start=4, produce=run, overview=overview)

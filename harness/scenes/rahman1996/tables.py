@@ -145,7 +145,7 @@ def trail_notes(table: str):
 
 #: the process the Rahman (1996) scenes share (one run of each engine gives every table); it
 #: starts last, when the Newton kernels it shares with Rahman (1991) are compiled
-GROUP, START = "rahman1996", 3
+GROUP, START = "rahman1996", 2
 
 
 def _scene(table: str) -> TableScene:
