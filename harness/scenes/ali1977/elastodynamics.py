@@ -659,9 +659,9 @@ def report(runs, limit, limit_runs, spectrum, summary, stresses=None) -> str:
               + (f"{r.periodicity_in:.1e} | {r.quasi_static_peak:.4f} | {r.dynamic_peak:.4f} | {r.max_error:.4f} | "
                  f"{r.error_over_peak:.3f} |" if math.isnan(r.newton_diverged_at_s) else
                  f"Newton diverged at {r.newton_diverged_at_s:.3f} s |  |  |  |  |") for r in runs.itertuples()]
-    lines += ["", "## The limit speeds", "", "| side | model | zeta | link mass | error passes 10 % of the peak at (rpm) |",
+    lines += ["", "## The limit speeds", "", "| side | model | zeta | link mass | error passes 10 % of the peak at (rpm, to the 0.1 rpm the settings resolve: `linkrepro bench`'s knob \"Exudyn settings (limit speed)\") |",
               "|---|---|---|---|---|"]
-    lines += [f"| {r.side} | {r.model} | {r.zeta:g} | {r.link_mass:g} | {r.limit_rpm:.2f} |" for r in limit.itertuples()]
+    lines += [f"| {r.side} | {r.model} | {r.zeta:g} | {r.link_mass:g} | {r.limit_rpm:.1f} |" for r in limit.itertuples()]
     lines += ["", "Exudyn's runs that found them (``speed_limit``: from the thesis's structure's limit, the secant in "
               "log error against log speed):", "", "| side | zeta | link mass | rpm | steps/rev | revolutions | error / peak |",
               "|---|---|---|---|---|---|---|"]
