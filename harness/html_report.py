@@ -17,6 +17,7 @@ from __future__ import annotations
 import base64
 import json
 import math
+from functools import lru_cache
 from pathlib import Path, PurePosixPath
 from typing import TYPE_CHECKING
 
@@ -202,6 +203,14 @@ class PageSizeWarning(UserWarning):
     """report.html is larger than ``PAGE_BUDGET``; it is still written."""
 
 
+@lru_cache(maxsize=None)
+def template() -> jinja2.Template:
+    """The page's template, compiled once a process."""
+    env = jinja2.Environment(loader=jinja2.FileSystemLoader(TEMPLATES), autoescape=True,
+                             undefined=jinja2.StrictUndefined, trim_blocks=True, lstrip_blocks=True)
+    return env.get_template("report.html.j2")
+
+
 def render(folder: "Folder", latest: str = "") -> str:
     """The page's HTML over what ``folder`` holds (``report_folder.collect``); ``latest``: a line
     on the run that just ended."""
@@ -214,9 +223,7 @@ def render(folder: "Folder", latest: str = "") -> str:
     used = set().union(*(s.get("used", set()) for s in sections))
     totals = folder.cell_totals()
     kinds = [k for k in EXPLAINED_BY if totals.get(k, 0)]      # the overview's kinds: those that explain a cell
-    env = jinja2.Environment(loader=jinja2.FileSystemLoader(TEMPLATES), autoescape=True,
-                             undefined=jinja2.StrictUndefined, trim_blocks=True, lstrip_blocks=True)
-    return env.get_template("report.html.j2").render(
+    return template().render(
         sections=sections, absent=folder.absent, absent_command=folder.absent_command, latest=latest,
         notes=folder.notes, engines=ENGINES,
         statuses=CELL_STATUSES, columns=[(c, heading(c)) for c in COUNT_COLUMNS if c not in EXPLAINED_BY or c in kinds],

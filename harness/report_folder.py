@@ -122,6 +122,18 @@ def _notes(out_dir: Path) -> list[str]:
     return notes
 
 
+def prepare() -> None:
+    """Load now what writing the reports will need (the listings' alignment with the scan, the
+    register, the page's template, the theses' commands): ``reproduce`` calls it while its
+    workers run, so that its reports after them take less time.  Each is kept for the process."""
+    from . import html_report, listing_lines
+    listing_lines.align_every_listing()
+    register_mod.parsed()
+    html_report.template()
+    for thesis in THESES:
+        commands_of(thesis)
+
+
 def collect(out_dir: Path) -> Folder:
     """What ``out_dir`` holds: scenes run into it (or unreadable), the commands' outputs (present
     or not), in the report's order; the scenes not run into it apart."""

@@ -15,7 +15,7 @@ from queue import Empty
 
 import pandas as pd
 
-from . import listing_lines, manifest, progress, readings, report_folder, run_folder
+from . import manifest, progress, readings, report_folder, run_folder
 from .diff import total_counts
 from .scene import Outcome, RunOptions
 from .scenes import SCENES, TABLES, get
@@ -158,7 +158,7 @@ def _run_groups(groups: list[list[str]], out_dir: Path, options: RunOptions, par
     forks = "fork" in multiprocessing.get_all_start_methods()
     context = multiprocessing.get_context("fork" if forks else "spawn")
     queue, waiting, running, results = context.Queue(), list(enumerate(groups)), {}, {}
-    aligned = False
+    prepared = False
     try:
         while waiting or running:
             while waiting and len(running) < workers:
@@ -168,9 +168,9 @@ def _run_groups(groups: list[list[str]], out_dir: Path, options: RunOptions, par
                 with _interrupt_deferred():           # never half-started
                     worker.start()
                     running[index] = worker
-            if not aligned:          # the report's listing alignment, while the workers run (no scene needs it)
-                listing_lines.align_every_listing()
-                aligned = True
+            if not prepared:         # what the reports need, loaded while the workers run (no scene needs it)
+                report_folder.prepare()
+                prepared = True
             try:
                 kind, key, value = queue.get(timeout=0.2)
             except Empty:
