@@ -26,7 +26,7 @@ from typing import Any
 
 import pandas as pd
 
-from .register import REGISTER_PATH, parsed
+from .register import REGISTER_PATH, raw_entries
 
 PRINTED_DIR = Path(__file__).resolve().parent.parent / "legacy" / "printed"
 SRC_DIR = PRINTED_DIR.parent / "src"
@@ -41,7 +41,7 @@ class CompilerError(RuntimeError):
 
 def entries() -> list[dict]:
     """Every register entry (as the TOML holds it)."""
-    return parsed(REGISTER_PATH).get("deviation", [])
+    return list(raw_entries(REGISTER_PATH))
 
 
 def tables_of(entry: dict, driver: Any) -> tuple[str, ...]:

@@ -205,11 +205,24 @@ def _parse(data: bytes) -> dict:
     return tomllib.loads(data.decode())
 
 
+def raw_entries(path: Path = REGISTER_PATH) -> tuple[dict, ...]:
+    """The register's entries as the TOML holds them, read now, parsed once a process for each
+    content: shared, to be read and never changed (``parsed`` gives a copy to change)."""
+    return tuple(_parse(Path(path).read_bytes()).get("deviation", []))
+
+
 def load(path: Path = REGISTER_PATH) -> dict[str, Deviation]:
-    """Read and validate the register; raise ValueError on a malformed entry."""
-    data = parsed(path)
+    """Read and validate the register; raise ValueError on a malformed entry.  The entries are
+    built once a process for each content the file has had (a run reads it in every scene, a
+    deep copy of the TOML each time cost about 0.5 s of a run's CPU) and shared: every call gives
+    a new dict of the same frozen entries."""
+    return dict(_entries(Path(path).read_bytes()))
+
+
+@lru_cache(maxsize=4)
+def _entries(data: bytes) -> dict[str, Deviation]:
     entries: dict[str, Deviation] = {}
-    for raw in data.get("deviation", []):
+    for raw in _parse(data).get("deviation", []):
         missing = [k for k in REQUIRED if not str(raw.get(k, "")).strip()]
         if missing:
             raise ValueError(f"register entry {raw.get('id', '?')} lacks {', '.join(missing)}")
