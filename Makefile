@@ -27,7 +27,8 @@ packaging: $(VENV)/.installed
 bench: $(VENV)/.installed
 	$(BIN)/linkrepro bench --out out/bench
 
-# the fuzz's seeds (each 20,000 calls, about two minutes on 2 cores): `make fuzz SEEDS=7` for another
+# the fuzz's seeds (each 20,000 calls, about two minutes on 2 cores): `make fuzz SEEDS=7` for another;
+# then the property tests at ten times the examples, the register's slow checks, the numba cache race whole
 SEEDS ?= 0 1 2
 fuzz: $(VENV)/.installed
 	for seed in $(SEEDS); do \
@@ -39,6 +40,7 @@ fuzz: $(VENV)/.installed
 	  tests/rahman1996/test_qprog_scaling.py tests/rahman1996/test_qprog_feasibility.py \
 	  tests/rahman1996/test_arguments.py
 	LINKREPRO_SLOW_CHECKS=1 $(BIN)/python -m pytest -q tests/harness/test_register_citations.py
+	LINKREPRO_FULL_NUMBA_RACE=1 $(BIN)/python -m pytest -q tests/harness/test_numba_cache.py
 
 setup: $(VENV)/.installed
 

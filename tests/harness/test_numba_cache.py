@@ -7,7 +7,9 @@ with mismatched symbol names; every later call then crashes (SIGSEGV, numba issu
 open).  The port therefore uses no cached gufunc, and this test compiles every cached kernel
 from an empty cache in several processes at once, repeatedly, then calls them all again from
 the cache those processes wrote: no crash, and the same numbers as a process that compiled
-alone.
+alone.  ``make test`` runs it small (two processes, one round, a kernel of each kind the port
+caches: ``@vectorize`` and ``@njit``: seconds); ``make fuzz`` runs it whole (every kernel, three
+processes, two rounds: minutes), with ``LINKREPRO_FULL_NUMBA_RACE=1``.
 """
 from __future__ import annotations
 
@@ -16,8 +18,6 @@ import os
 import pathlib
 import subprocess
 import sys
-
-import pytest
 
 import linkrepro.port
 
@@ -71,6 +71,23 @@ print(digest.hexdigest())
 """
 
 
+#: the small workload: the C library's functions (``@vectorize``, libm) and REAL*4 products
+#: (``@njit``, real4), one of each kind of cached kernel
+SMALL_WORKLOAD = r"""
+import hashlib
+import numpy as np
+from linkrepro.port import libm, real4
+
+digest = hashlib.sha256()
+deg = np.arange(0.0, 360.0, 30.0)
+for value in (libm.sin(deg), libm.cos(deg), libm.arctan(deg), real4.product(np.ones((3, 2, 4)), np.full((4, 5), 0.1), True)):
+    digest.update(np.ascontiguousarray(value, dtype=np.float64).tobytes())
+print(digest.hexdigest())
+"""
+SMALL_KERNELS = {"libm.sin", "libm.cos", "libm.arctan", "real4._mprd"}
+FULL_ENV = "LINKREPRO_FULL_NUMBA_RACE"
+
+
 def cached_kernels() -> set[str]:
     """``module.function`` of every kernel the port compiles with ``cache=True``, read from the
     source: decorated functions, and functions passed to ``njit(f, cache=True)``."""
@@ -90,13 +107,13 @@ def _caches(call: ast.Call) -> bool:
     return any(k.arg == "cache" and getattr(k.value, "value", False) is True for k in call.keywords)
 
 
-def _run_many(cache_dir: pathlib.Path | None, processes: int) -> list[str]:
-    """Start ``processes`` interpreters on WORKLOAD at once with numba's cache in ``cache_dir``
+def _run_many(workload: str, cache_dir: pathlib.Path | None, processes: int) -> list[str]:
+    """Start ``processes`` interpreters on ``workload`` at once with numba's cache in ``cache_dir``
     (None: where the installation keeps it)."""
     env = {k: v for k, v in os.environ.items() if k != "NUMBA_CACHE_DIR"}
     if cache_dir is not None:
         env["NUMBA_CACHE_DIR"] = str(cache_dir)
-    started = [subprocess.Popen([sys.executable, "-c", WORKLOAD], env=env, stdout=subprocess.PIPE,
+    started = [subprocess.Popen([sys.executable, "-c", workload], env=env, stdout=subprocess.PIPE,
                                 stderr=subprocess.PIPE, text=True) for _ in range(processes)]
     outputs = []
     for proc in started:
@@ -117,18 +134,21 @@ def test_no_cached_gufunc_in_the_port():
     assert not found
 
 
-@pytest.mark.parametrize("rounds", [2])
-def test_cold_cache_compiled_concurrently_then_reused(tmp_path, rounds):
+def test_cold_cache_compiled_concurrently_then_reused(tmp_path):
     """The reference: the workload in a process of its own on the installation's cache.  Then,
-    ``rounds`` times, three processes compile every kernel into an empty cache at the same
-    moment, and three more load what they wrote: each exits cleanly with the reference
-    digest, and the cold wave has cached every kernel of the port (none escapes the test)."""
-    (reference,) = _run_many(None, 1)
+    for each round, several processes compile its kernels into an empty cache at the same
+    moment, and as many more load what they wrote: each exits cleanly with the reference
+    digest.  Whole (``FULL_ENV``): every kernel of the port, three processes, two rounds, and
+    the cold wave caches every kernel (none escapes the test)."""
+    full = bool(os.environ.get(FULL_ENV))
+    workload, processes, rounds = (WORKLOAD, 3, 2) if full else (SMALL_WORKLOAD, 2, 1)
+    (reference,) = _run_many(workload, None, 1)
     kernels = cached_kernels()
     assert len(kernels) > 20
     for r in range(rounds):
         cache = tmp_path / f"race{r}"
-        assert _run_many(cache, 3) == [reference] * 3
+        assert _run_many(workload, cache, processes) == [reference] * processes
         written = {p.name.split("-")[0] for p in cache.rglob("*.nbi")}
-        assert kernels <= written, f"kernels the workload does not compile: {sorted(kernels - written)}"
-        assert _run_many(cache, 3) == [reference] * 3
+        expected = kernels if full else SMALL_KERNELS
+        assert expected <= written, f"kernels the workload does not compile: {sorted(expected - written)}"
+        assert _run_many(workload, cache, processes) == [reference] * processes
