@@ -186,6 +186,16 @@ def _read_run_csv(path: Path) -> pd.DataFrame | str:
         return f"cannot be read ({type(exc).__name__}: {(str(exc).splitlines() or [''])[0]})"
 
 
+def _a_folder(out_dir: Path) -> None:
+    """``VerifyError`` where ``out_dir`` does not exist or is not a folder (said as such, not as a
+    folder that holds no run)."""
+    if not out_dir.exists():
+        raise VerifyError(f"{out_dir} does not exist: `{command_line(['reproduce', '--out', str(out_dir)])}` "
+                          "makes a run there")
+    if not out_dir.is_dir():
+        raise VerifyError(f"{out_dir} is a file, not a run's folder")
+
+
 def verify(out_dir: Path, reference_dir: Path = REFERENCE_DIR, units: float = UNITS,
            scenes: list[str] | None = None) -> Verdict:
     """Compare the scenes of ``out_dir`` (``scenes``: those only) with ``reference_dir``."""
@@ -193,6 +203,7 @@ def verify(out_dir: Path, reference_dir: Path = REFERENCE_DIR, units: float = UN
     if not reference_dir.is_dir() or not reference_scenes(reference_dir):
         raise VerifyError(f"no reference at {reference_dir} (a folder of <scene>/<file>{SUFFIX}); "
                           "`linkrepro verify --refresh --reference DIR` makes one from a run")
+    _a_folder(out_dir)
     known = reference_scenes(reference_dir)
     found = scenes_in(out_dir, tuple(known))
     if scenes:
@@ -283,6 +294,7 @@ def refresh(out_dir: Path, reference_dir: Path = REFERENCE_DIR) -> int:
     wrote (``run_folder.read_scene``), or where ``out_dir`` lacks a scene the reference holds
     (nothing is dropped: the reference stays as it was)."""
     out_dir, reference_dir = Path(out_dir), Path(reference_dir)
+    _a_folder(out_dir)
     scenes = scenes_in(out_dir)
     if not scenes:
         raise VerifyError(f"{out_dir} holds no scene run to make the reference of")

@@ -117,7 +117,8 @@ def test_a_missing_or_new_csv_is_named(recorded, run):
     assert status == 1 and "identities.csv: missing in the run" in text and "extra.csv: not in the reference" in text
 
 
-@pytest.mark.parametrize("case", ["no reference", "damaged", "no scenes", "scene not run", "manifest format"])
+@pytest.mark.parametrize("case", ["no reference", "damaged", "no scenes", "scene not run", "manifest format",
+                                  "no folder", "a file"])
 def test_what_cannot_be_verified_is_a_usage_error(recorded, run, tmp_path, case):
     ref = Path(shutil.copytree(recorded[1], tmp_path / "ref"))
     args = ["verify", "--out", str(run), "--reference", str(ref)]
@@ -129,13 +130,18 @@ def test_what_cannot_be_verified_is_a_usage_error(recorded, run, tmp_path, case)
         args[2] = str(tmp_path)
     elif case == "scene not run":
         args.append("rahman1996-table5_7")
+    elif case == "no folder":
+        args[2] = str(tmp_path / "nosuchdir")
+    elif case == "a file":
+        args[2] = __file__
     else:
         _manifest(ref)
         (run / "manifest.json").write_text(json.dumps({"format": 99}))
     status, _, err = _cli(*args)
     assert status == 2 and err.startswith("linkrepro: ") and "Traceback" not in err
     assert {"no reference": "no reference", "damaged": "damaged", "no scenes": "no scene run",
-            "scene not run": "no run of rahman1996-table5_7", "manifest format": "format 99"}[case] in err
+            "scene not run": "no run of rahman1996-table5_7", "manifest format": "format 99",
+            "no folder": "nosuchdir does not exist", "a file": "is a file, not a run's folder"}[case] in err
 
 
 def test_the_reference_carried_by_the_package_covers_every_scene():
