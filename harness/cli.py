@@ -163,11 +163,14 @@ def _summary(done: list, out_dir: Path) -> None:
 
 
 def _report_line(out_dir: Path, more=lambda folder: "") -> None:
-    """The last line of a run: the folder's report.html (and report.md), the scenes it shows."""
+    """The last line of a run: the folder's report.html (and report.md), the scenes it shows
+    (those skipped, where Exudyn is missing, counted apart)."""
     from .report_folder import collect
     folder = collect(out_dir)
-    scenes = len(folder.outcomes)
-    _out(f"report: {out_dir / 'report.html'} and report.md  ({scenes} scene{'s' * (scenes != 1)}{more(folder)})")
+    skipped = sum(1 for outcome in folder.outcomes if outcome.skipped)
+    scenes = len(folder.outcomes) - skipped
+    _out(f"report: {out_dir / 'report.html'} and report.md  ({scenes} scene{'s' * (scenes != 1)}"
+         f"{f', {skipped} skipped' if skipped else ''}{more(folder)})")
 
 
 def _reproduce(args: argparse.Namespace, parser: _Parser) -> int:

@@ -59,6 +59,7 @@ def test_without_exudyn_a_run_skips_the_scene_and_says_why(tmp_path, hidden):
     assert done.returncode == 0, done.stderr
     assert f"{SCENE}: skipped, needs Exudyn {multibody.PINNED}" in done.stdout
     assert multibody.INSTALL in done.stdout
+    assert "(0 scenes, 1 skipped" in done.stdout.splitlines()[-1]          # the last line counts it apart
     assert f"**Skipped: needs Exudyn {multibody.PINNED}" in (out / "report.md").read_text()
     assert "Skipped: needs Exudyn" in (out / "report.html").read_text()
     assert sorted(p.name for p in (out / SCENE).iterdir()) == ["outcome.json"]
