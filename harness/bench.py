@@ -252,7 +252,8 @@ def knob_tables(rows: pd.DataFrame, descriptions: dict[str, str]) -> list[str]:
 def markdown(frame: pd.DataFrame, descriptions: dict[str, str], repeat: int, elapsed: float, png: str) -> str:
     """bench.md: the cost table, the figure, the knobs' tables."""
     lines = ["# linkrepro bench", "",
-             f"Best of {repeat} calls each (time.perf_counter; the port's caches cleared before each call), all "
+             f"{'One call' if repeat == 1 else f'Best of {repeat} calls'} each (time.perf_counter; the port's "
+             "caches cleared before each call), all "
              f"from one run of {elapsed:.0f} s. The machine is shared: read the ratios, measured side by side, "
              "not the seconds.", "", "## Cost per position", "",
              "Microseconds per position (an input angle, a crank position). Limit: the flops per position of the "

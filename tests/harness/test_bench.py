@@ -64,11 +64,12 @@ def test_quick_bench_writes_its_three_files(tmp_path, monkeypatch):
     out = tmp_path / "b"
     stdout, stderr = io.StringIO(), io.StringIO()
     with contextlib.redirect_stdout(stdout), contextlib.redirect_stderr(stderr):
-        status = main(["bench", "--repeat", "1", "--quick", "--out", str(out)])
+        status = main(["bench", "--quick", "--out", str(out)])             # --quick: one call a setting
     assert status == 0, stderr.getvalue()
     assert sorted(p.name for p in out.iterdir()) == sorted([*bench.OUTPUTS, "manifest.json", ".linkrepro.lock"])
     record = json.loads((out / "manifest.json").read_text())
-    assert record["command"] == f"linkrepro bench --repeat 1 --quick --out {out}" and record["scenes"] == ["bench"]
+    assert record["command"] == f"linkrepro bench --quick --out {out}" and record["scenes"] == ["bench"]
+    assert "One call each" in (out / "bench.md").read_text()
     assert list(record["outputs"]) == ["bench.csv"]
     frame = pd.read_csv(out / "bench.csv")
     assert list(frame.columns) == bench.COLUMNS
