@@ -136,8 +136,11 @@ def _number(value: float) -> str:
     return "not produced" if math.isnan(value) else f"{value:.9g}"
 
 
-def _digits(value: float) -> str:
-    return "-" if math.isnan(value) else "all" if math.isinf(value) else f"{value:.1f}"
+def _digits(engine: EngineCell, trail: Trail) -> str:
+    """The printed digits ``engine`` reproduces, as the page's marker shows them ("2/3"; "-": no value)."""
+    printed = printed_digits(trail.published_text)
+    found = digits_reproduced(engine.difference, trail.half_unit, printed)
+    return "-" if found is None else f"{found}/{printed}"
 
 
 def as_text(trail: Trail, edits_shown: int = 6, width: int = 100) -> str:
@@ -150,7 +153,7 @@ def as_text(trail: Trail, edits_shown: int = 6, width: int = 100) -> str:
     for e in trail.engines:
         ids = f"  ({' '.join(e.register_ids)})" if e.register_ids else ""
         diff = "" if math.isnan(e.value) else f"{e.difference:.3g}"
-        out.append(f"  {e.engine:15s} {_number(e.value):>16s} {diff:>13s} {_digits(e.digits):>6s}  {e.counts_as}{ids}")
+        out.append(f"  {e.engine:15s} {_number(e.value):>16s} {diff:>13s} {_digits(e, trail):>6s}  {e.counts_as}{ids}")
     for note in trail.notes:
         out += [""] + textwrap.wrap(note, width, break_on_hyphens=False)
     if trail.assumptions:

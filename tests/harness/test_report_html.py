@@ -88,6 +88,7 @@ def test_explain_prints_the_trail(run_dir):
     assert "published  -0.655" in out                                # harness/published, as printed
     for engine in ("printed", "legacy", "port_printed", "port_corrected"):
         assert re.search(rf"^\s+{engine}\s", out, re.M)
+    assert re.search(r"^\s+legacy\s.*\s0/3\s", out, re.M)        # digits as the page's marker: a misprinted sign
     kept = assumed(SCENE)                                             # the model assumptions, named
     assert kept and all(f"{e.id} {e.title}" in " ".join(out.split()) for e in kept)
 
