@@ -5,7 +5,7 @@ and otherwise starts a thread per core.  linkrepro's systems are small, and thos
 more than they give: in ``reproduce``'s pool (one process per core) each process's threads
 compete for the same cores, and they change the last bits of a result with the number of
 threads (measured 2026-11-28 on the 2-core machine: ali1977-multibody's stiff solves moved by
-up to 1.6e-7 relative between 2 threads and 1, so the run of record in ``reference/`` would
+up to 2.7e-7 relative between 2 threads and 1, so the run of record in ``reference/`` would
 depend on the core count of the machine that made it; on a loaded machine that scene took 25 s
 of CPU with 2 threads, 3.2 s with one).  ``use_one`` sets the variable before numpy loads.
 """

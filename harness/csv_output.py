@@ -52,6 +52,7 @@ def write_csv(frame: pd.DataFrame, path: Path, float_format: str | None = None) 
         frame.to_csv(path, index=False, float_format=float_format)      # dates, categories: pandas
         return
     columns = [_cells(column, float_format) for _, column in frame.items()]
+    # one column: the csv module writes an empty cell as "" (a blank line would read as no row)
     plain = len(columns) > 1 and all(_plain(cells) for cells, (_, column) in zip(columns, frame.items())
                                      if column.dtype.kind == "O") and _plain([str(c) for c in frame.columns])
     with open(path, "w", newline="") as handle:

@@ -219,12 +219,12 @@ def speed_limit(ratio, guess: float, level: float = ERROR_LEVEL) -> float:
                            f"from {guess:g} rpm")
 
 
-def _scaled_quasi_static(rpms, side: str):
-    """(k, the quasi-static deflection (LINEAR_STEPS, 2), in, at rpms[k] over ``linear_periodic``'s
-    angles): RPM's times (rpm / RPM)^2 (the load, and so the linear deflection, scales so; the
-    port's at that speed to rounding), one port call for every speed."""
+def _scaled_quasi_static(rpms, side: str) -> list[np.ndarray]:
+    """The quasi-static deflection (LINEAR_STEPS, 2), in, at each of ``rpms`` over
+    ``linear_periodic``'s angles: RPM's times (rpm / RPM)^2 (the load, and so the linear
+    deflection, scales so; the port's at that speed to rounding), one port call for every speed."""
     qs = quasi_static(np.arange(LINEAR_STEPS) * 360.0 / LINEAR_STEPS, RPM, side)
-    return ((k, qs * (rpm / RPM) ** 2) for k, rpm in enumerate(rpms))
+    return [qs * (rpm / RPM) ** 2 for rpm in rpms]
 
 
 LINEAR_LIMIT_STEP_RPM = 0.25
@@ -238,7 +238,8 @@ def linear_limit(sweep: pd.DataFrame, side: str, zeta: float) -> float:
     guess = crossing(rows["rpm"], rows["error_over_peak"])
     rpms = np.arange(guess * (1.0 - LIMIT_BELOW), guess * (1.0 + LIMIT_ABOVE), LINEAR_LIMIT_STEP_RPM)
     out, _ = linear_periodic(rpms, zeta, side=side)
-    ratio = [(lambda peak_qs, _, error: error / peak_qs)(*error_of(out[k], qs)) for k, qs in _scaled_quasi_static(rpms, side)]
+    ratio = [(lambda peak_qs, _, error: error / peak_qs)(*error_of(orbit, qs))
+             for orbit, qs in zip(out, _scaled_quasi_static(rpms, side))]
     return crossing(rpms, ratio)
 
 
@@ -251,8 +252,7 @@ def linear_sweep() -> pd.DataFrame:
         for zeta in (ZETA, ZETA_LOW, ZETA_LOWEST):
             out, decay = linear_periodic(LINEAR_RPM, zeta, side=side)
             rows = []
-            for k, qs in _scaled_quasi_static(LINEAR_RPM, side):
-                rpm = LINEAR_RPM[k]
+            for k, (rpm, qs) in enumerate(zip(LINEAR_RPM, _scaled_quasi_static(LINEAR_RPM, side))):
                 peak_qs, peak, error = error_of(out[k], qs)
                 rows.append({"side": side, "zeta": zeta, "rpm": rpm, "quasi_static_peak": peak_qs, "dynamic_peak": peak,
                              "error_over_peak": error / peak_qs, "transient_left_per_rev": decay[k]})
