@@ -28,7 +28,7 @@ def run_bench(repeat: int = 10, out: Path | str = Path("out/bench"), quick: bool
 
     ``repeat``: calls per timing (best of; a sweep takes repeat // 10, at least 1); ``quick``:
     the reduced configuration (each thesis's smallest: few positions, three settings a knob, no
-    sweep), a smoke test of a few seconds."""
+    sweep): a smoke test (bench.md says how long its run took)."""
     if repeat < 1:
         raise ValueError("repeat must be >= 1")
     start, out = time.perf_counter(), Path(out)

@@ -105,7 +105,7 @@ def _parser() -> tuple[_Parser, dict[str, _Parser], dict]:
                        help="output folder for bench.md, bench.png, bench.csv (default: out/bench/)")
     bench.add_argument("--quick", action="store_true",
                        help="a reduced configuration (the tables' 19 angles, three settings a knob, no Case III "
-                            "sweep, one call a setting unless --repeat): a smoke test of about 10 s")
+                            "sweep, one call a setting unless --repeat): a smoke test; bench.md says how long it took")
     verify = sub.add_parser("verify", help="compare a run's scene CSVs with the stored run of record, cell by "
                             "cell (identical, within the policy, moved, status changed)")
     verify.add_argument("scenes", nargs="*", help="scenes to compare (default: every scene run into --out)")

@@ -1,7 +1,7 @@
 """``linkrepro bench``: what it computes, not how fast (no timing is asserted).
 
 The Pareto front on hand-made points, the knobs' reference settings at error 0, and the
-command's output files on the reduced configuration (``--quick``, a few seconds).
+command's output files on the reduced configuration (``--quick``).
 """
 from __future__ import annotations
 
