@@ -92,54 +92,60 @@ def _number(value: float) -> str | None:
 
 def _column_head(scene, column: str) -> dict:
     what = scene.describe(column)
-    return {"id": column, "words": what.words, "unit": what.unit}
+    return {"id": column, "words": what.words, "unit": what.unit, "label": what.label}
 
 
-def table_view(scene, diff: pd.DataFrame, register: dict[str, Deviation], blocks: dict, cells: dict,
-               labels: dict) -> dict:
-    """The published table as printed (rows, columns in words and unit, what each cell counts
-    as per engine: CELL_STATUSES, and the printed digits each engine reproduces) for the
-    template; each cell's trail data goes into ``cells`` and its listing lines and the scene's
-    ``trail_notes`` into ``blocks``."""
+def _engine_record(record: dict, printed: int) -> list:
+    """One engine's side of a cell for the page's data: [status (index in CELL_STATUSES), value,
+    |difference|, digits reproduced, register ids, kind], the empty fields at its end left out
+    (the page's script reads them as empty: a cell not produced is ``[5]``)."""
+    ids = record["register_ids"] if isinstance(record["register_ids"], str) else ""
+    fields = [CELL_STATUSES.index(record["shown"]), _number(float(record["value"])), _number(float(record["abs_diff"])),
+              digits_reproduced(float(record["abs_diff"]), float(record["half_unit"]), printed),
+              " ".join(ids.split()), record["kind"] if isinstance(record["kind"], str) else ""]
+    while fields and fields[-1] in (None, ""):
+        fields.pop()
+    return fields
+
+
+def table_view(scene, diff: pd.DataFrame, register: dict[str, Deviation], blocks: dict, labels: dict) -> dict:
+    """The published table as printed for the template (rows, columns: their ids, words and
+    unit) and its cells for the page's data (``data``): per row, per column, the printed text,
+    half a unit of its last digit, its significant digits, its trail block (listing lines and
+    the scene's ``trail_notes``, kept once a page in ``blocks``) and per engine (ENGINES'
+    order) ``_engine_record``; null where the table prints no cell.  The page's script colours
+    the cells, writes their digits markers and hover text from it."""
     key = scene.key_name
     classes = classify_cells(diff, register)
     diff = diff.assign(shown=classes["count"].map(lambda c: SHOWN.get(c, c)), kind=classes["kind"])
-    records: dict[str, dict[str, list[dict]]] = {}          # row key: column: the engines' records
+    records: dict[str, dict[str, dict[str, dict]]] = {}     # row key: column: engine: record
     for record in diff.assign(row_key=diff[key].astype(str)).to_dict("records"):
-        records.setdefault(record["row_key"], {}).setdefault(record["column"], []).append(record)
-    rows = []
+        records.setdefault(record["row_key"], {}).setdefault(record["column"], {})[record["engine"]] = record
+    columns = [c for c in scene.values if c in set(diff["column"])]
+    rows, data = [], []
     for row_key, by_column in records.items():
-        shown = []
-        for column in scene.values:
+        texts, cells = [], []
+        for column in columns:
             here = by_column.get(column)
             if not here:
+                texts.append(None)
+                cells.append(None)
                 continue
-            first = here[0]
+            first = next(iter(here.values()))
             text = str(first["published_text"])
             printed = printed_digits(text)
-            engines = {}
-            for r in here:
-                ids = r["register_ids"] if isinstance(r["register_ids"], str) else ""
-                record = {"status": r["shown"], "kind": r["kind"], "value": _number(float(r["value"])),
-                          "difference": _number(float(r["abs_diff"])),
-                          "digits": digits_reproduced(float(r["abs_diff"]), float(r["half_unit"]), printed),
-                          "ids": ids.split()}
-                # the page's script reads an absent field as empty: leaving them out keeps the page small
-                engines[r["engine"]] = {k: v for k, v in record.items() if v is not None and v != "" and v != []}
-            cell_id = f"{scene.name}|{row_key}|{column}"
             lines = tuple(line for s in scene.statements(str(first[key]), column) for line in listing_lines.find(s))
-            block = blocks.setdefault((lines, tuple(scene.trail_notes(str(first[key]), column))), f"L{len(blocks)}")
-            cells[cell_id] = {"scene": scene.name, "row": row_key, "column": column,
-                              "label": labels.setdefault(scene.describe(column).label, len(labels)), "published": text,
-                              "half_unit": float(first["half_unit"]), "printed_digits": printed,
-                              "engines": engines, "lines": block}
-            shown.append({"id": cell_id, "text": text, "printed": printed, "column": column,
-                          "status": {e: v["status"] for e, v in engines.items()},
-                          "digits": {e: v.get("digits") for e, v in engines.items()}})
-        rows.append({"key": row_key, "cells": shown})
-    keys = [_column_head(scene, k) for k in scene.keys]
-    return {"key_heads": keys, "columns": [_column_head(scene, c) for c in scene.values if c in set(diff["column"])],
-            "rows": rows, "source": published_source(scene.table)}
+            block = blocks.setdefault((lines, tuple(scene.trail_notes(str(first[key]), column))), len(blocks))
+            texts.append(text)
+            cells.append([text, float(first["half_unit"]), printed, block,
+                          *[_engine_record(here[e], printed) if e in here else None for e in ENGINES]])
+        rows.append({"key": row_key, "texts": texts})
+        data.append(cells)
+    heads = [_column_head(scene, c) for c in columns]
+    return {"key_heads": [_column_head(scene, k) for k in scene.keys], "columns": heads, "rows": rows,
+            "source": published_source(scene.table),
+            "data": {"columns": columns, "labels": [labels.setdefault(h["label"], len(labels)) for h in heads],
+                     "rows": list(records), "cells": data}}
 
 
 def overview(counts: pd.DataFrame) -> list[dict]:
@@ -162,7 +168,7 @@ def figures(folder: Path) -> list[dict]:
     return shown
 
 
-def _scene_view(folder: "Folder", section: "SceneSection", register, blocks, cells, labels) -> dict:
+def _scene_view(folder: "Folder", section: "SceneSection", register, blocks, tables, labels) -> dict:
     view = {"kind": "scene", "name": section.name, "title": section.title, "problem": section.problem,
             "outcome": section.outcome, "figures": [], "table": None, "overview": "", "counts": [], "assumptions": []}
     if section.outcome is None:
@@ -173,7 +179,8 @@ def _scene_view(folder: "Folder", section: "SceneSection", register, blocks, cel
     view["figures"] = figures(here) if here.is_dir() else []
     if section.name in TABLES and (here / "diff.csv").is_file():
         diff = read_diff(TABLES[section.name], folder.out_dir)
-        view["table"] = table_view(SCENES[section.name], diff, register, blocks, cells, labels)
+        view["table"] = table_view(SCENES[section.name], diff, register, blocks, labels)
+        tables[section.name] = view["table"].pop("data")
         if section.outcome.counts is not None:
             view["counts"] = overview(section.outcome.counts)
         view["used"] = {i for ids in diff["register_ids"].fillna("") for i in str(ids).split()}
@@ -216,9 +223,9 @@ def render(folder: "Folder", latest: str = "") -> str:
     on the run that just ended."""
     register = register_mod.load()
     blocks: dict[tuple, str] = {}
-    cells: dict[str, dict] = {}
-    labels: dict[str, int] = {}          # the columns' words, each once (a cell holds its index)
-    sections = [_scene_view(folder, s, register, blocks, cells, labels) if s.kind == "scene" else _output_view(folder, s)
+    tables: dict[str, dict] = {}         # scene: its table's cells (``table_view``'s data)
+    labels: dict[str, int] = {}          # the columns' words, each once (a column holds its index)
+    sections = [_scene_view(folder, s, register, blocks, tables, labels) if s.kind == "scene" else _output_view(folder, s)
                 for s in folder.sections]
     used = set().union(*(s.get("used", set()) for s in sections))
     totals = folder.cell_totals()
@@ -232,5 +239,5 @@ def render(folder: "Folder", latest: str = "") -> str:
         entries=[_entry(register[i]) for i in sorted(used) if i in register],
         blocks={block: {"notes": notes, "lines": [_line(line) for line in lines]}
                 for (lines, notes), block in blocks.items()},
-        cells_json=json.dumps(cells, separators=(",", ":")).replace("</", "<\\/"),
-        labels_json=json.dumps(list(labels), separators=(",", ":")).replace("</", "<\\/"))
+        cells_json=json.dumps({"engines": ENGINES, "statuses": CELL_STATUSES, "labels": list(labels), "tables": tables},
+                              separators=(",", ":")).replace("</", "<\\/"))
