@@ -75,7 +75,25 @@ def test_page_is_self_contained(run_dir):
     assert refs.links == 0
     outside = [u for u in refs.urls if not (u.startswith("data:") or u.startswith("#") or (run_dir / u).is_file())]
     assert outside == []
-    assert any(u.startswith("data:image/png;base64,") for u in refs.urls)     # the table's figure
+    assert any(u.startswith("data:image/webp;base64,") for u in refs.urls)     # the table's figure
+
+
+def test_every_figure_is_on_the_page_pixel_for_pixel(run_dir):
+    """A figure is embedded smaller (lossless WebP) but every pixel as in its PNG (decoded by Pillow)."""
+    import base64
+    import io
+
+    from PIL import Image
+
+    def pixels(image) -> bytes:
+        return image.convert("RGB").tobytes() + repr(image.size).encode()
+    refs = _Refs()
+    refs.feed((run_dir / "report.html").read_text())
+    embedded = [base64.b64decode(u.split(",", 1)[1]) for u in refs.urls if u.startswith("data:image/")]
+    shown = sorted(pixels(Image.open(io.BytesIO(data))) for data in embedded)
+    pngs = sorted(run_dir.rglob("*.png"))
+    assert len(pngs) >= 2 and shown == sorted(pixels(Image.open(png)) for png in pngs)
+    assert sum(map(len, embedded)) < 0.85 * sum(png.stat().st_size for png in pngs)
 
 
 def test_explain_prints_the_trail(run_dir):
