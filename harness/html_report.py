@@ -18,6 +18,7 @@ import base64
 import io
 import json
 import math
+import re
 from functools import lru_cache
 from pathlib import Path, PurePosixPath
 from typing import TYPE_CHECKING
@@ -46,6 +47,8 @@ PAGE_BUDGET = 3_000_000
 #: the encoder's effort: 3/25 is within 0.2 % of the smallest (6/100, 80 times slower), measured
 #: on the 22 figures of a full run: 651 against 863 kB of PNG
 WEBP = {"lossless": True, "method": 3, "quality": 25}
+#: the heading level (``###`` in a command's markdown) whose subsections the page folds
+FOLD_LEVEL = 3
 #: tagged src edits shown per register entry (the rest are counted)
 EDITS_SHOWN = 8
 #: what a cell is coloured as: ``diff.classify_cells``'s class, a matched cell shown as ``match``
@@ -83,6 +86,49 @@ def markdown_html(text: str, base: PurePosixPath = PurePosixPath("."), breaks: b
 
     md.renderer.rules["link_open"] = link_open
     return md.render(text)
+
+
+HEADING = re.compile(r"<h([1-6])>.*?</h\1>\n?", re.S)
+
+
+def _inside(html: str) -> str:
+    """What a folded subsection holds, in words: its tables and their rows ("a table of 11
+    rows"), or its paragraphs."""
+    rows = [body.count("<tr>") for body in re.findall(r"<tbody>(.*?)</tbody>", html, re.S)]
+    if len(rows) == 1:
+        return f"a table of {rows[0]} row{'s' * (rows[0] != 1)}"
+    if rows:
+        return f"{len(rows)} tables, {sum(rows)} rows"
+    paragraphs = html.count("<p>")
+    return f"{paragraphs} paragraph{'s' * (paragraphs != 1)}"
+
+
+def folded(html: str, level: int = FOLD_LEVEL) -> str:
+    """``markdown_html``'s HTML with each subsection headed at ``level`` (up to the next heading
+    at that level or above) behind ``<details>``: its heading and what it holds (``_inside``)
+    are the summary, a reader opens the one wanted."""
+    out, start, open_at = [], 0, None
+
+    def close(end: int) -> None:
+        if open_at is not None:
+            head, body = html[open_at[0]:open_at[1]], html[open_at[1]:end]
+            out.append(f'<details class="fold"><summary>{head.rstrip()} <span class="inside">({_inside(body)})</span>'
+                       f"</summary>\n{body}</details>\n")
+    for match in HEADING.finditer(html):
+        depth = int(match.group(1))
+        if depth > level:
+            continue
+        close(match.start())
+        if open_at is None:
+            out.append(html[start:match.start()])
+        open_at = (match.start(), match.end()) if depth == level else None
+        if open_at is None:
+            out.append(match.group(0))
+        start = match.end()
+    close(len(html))
+    if open_at is None:
+        out.append(html[start:])
+    return "".join(out)
 
 
 def _line(line: listing_lines.ListingLine) -> dict:
@@ -214,7 +260,7 @@ def _output_view(folder: "Folder", section: "OutputSection") -> dict:
                                          f"{manifest.code_span(section.command)} writes it again.**")
             return view
         body = text.split("\n", 1)[1] if text.startswith("# ") else text      # the section has its heading
-        view["html"] = markdown_html(body, PurePosixPath(section.folder.relative_to(folder.out_dir).as_posix()))
+        view["html"] = folded(markdown_html(body, PurePosixPath(section.folder.relative_to(folder.out_dir).as_posix())))
     return view
 
 

@@ -236,6 +236,26 @@ def test_every_section_is_rendered_and_none_is_lost_by_a_rerun(page):
     shot(page, "top")
 
 
+def test_the_bench_s_subsections_are_folded_and_say_what_they_hold(page):
+    """Each ### subsection of the bench is a <details>: its summary is its heading and its table's
+    rows (counted here in the table), a click opens it; folded, a subsection takes its summary's
+    line or two, open, its table's height more."""
+    from selenium.webdriver.common.by import By
+    bench = page.find_element(By.ID, "bench")
+    folds = bench.find_elements(By.CSS_SELECTOR, "details.fold")
+    assert len(folds) >= 3 and not any(f.get_attribute("open") for f in folds)
+    line = page.execute_script("return parseFloat(getComputedStyle(arguments[0]).lineHeight)", bench)
+    for fold in folds:
+        rows = len(fold.find_elements(By.CSS_SELECTOR, "tbody tr"))
+        summary = fold.find_element(By.TAG_NAME, "summary")
+        assert summary.find_element(By.TAG_NAME, "h3").text and f"a table of {rows} row" in summary.text
+        assert rect(page, fold)["height"] < 3 * line
+    page.execute_script("arguments[0].scrollIntoView({block: 'center'})", folds[0])
+    folds[0].find_element(By.TAG_NAME, "summary").click()
+    table = folds[0].find_element(By.TAG_NAME, "table")
+    assert table.is_displayed() and rect(page, folds[0])["height"] > rect(page, table)["height"] + line
+
+
 def test_each_heading_is_clear_of_the_header_after_its_link_is_clicked(page):
     from selenium.webdriver.common.by import By
     links = page.find_elements(By.CSS_SELECTOR, "header nav a")
