@@ -19,6 +19,7 @@ import io
 import json
 import math
 import re
+from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path, PurePosixPath
 from typing import TYPE_CHECKING
@@ -153,25 +154,55 @@ def _column_head(scene, column: str) -> dict:
     return {"id": column, "words": what.words, "unit": what.unit, "label": what.label}
 
 
-def _engine_record(record: dict, printed: int) -> list:
+@dataclass
+class PageData:
+    """What the page's script reads (``cells-data``): per scene its published table's cells
+    (``table_view``), and what they repeat kept once, each cell holding its index: the columns'
+    words, the register ids' lists, the trail blocks (listing lines and the scene's notes,
+    shown from the page's templates)."""
+    tables: dict[str, dict] = field(default_factory=dict)
+    labels: dict[str, int] = field(default_factory=dict)
+    ids: dict[str, int] = field(default_factory=dict)
+    blocks: dict[tuple, int] = field(default_factory=dict)
+
+    @staticmethod
+    def once(kept: dict, value) -> int:
+        """``value``'s index in ``kept`` (added at its end the first time)."""
+        return kept.setdefault(value, len(kept))
+
+    def json(self) -> str:
+        """The page's data as JSON, safe inside ``<script>``."""
+        return json.dumps({"engines": ENGINES, "statuses": CELL_STATUSES, "labels": list(self.labels),
+                           "ids": [ids.split() for ids in self.ids], "tables": self.tables},
+                          separators=(",", ":")).replace("</", "<\\/")
+
+
+def _engine_record(record: dict, printed: int, data: PageData) -> list:
     """One engine's side of a cell for the page's data: [status (index in CELL_STATUSES), value,
-    |difference|, digits reproduced, register ids, kind], the empty fields at its end left out
-    (the page's script reads them as empty: a cell not produced is ``[5]``)."""
-    ids = record["register_ids"] if isinstance(record["register_ids"], str) else ""
+    |difference|, digits reproduced, register ids (index in ``data.ids``), kind], the empty
+    fields at its end left out (the page's script reads them as empty: not produced is ``[5]``)."""
+    ids = " ".join(record["register_ids"].split()) if isinstance(record["register_ids"], str) else ""
     fields = [CELL_STATUSES.index(record["shown"]), _number(float(record["value"])), _number(float(record["abs_diff"])),
               digits_reproduced(float(record["abs_diff"]), float(record["half_unit"]), printed),
-              " ".join(ids.split()), record["kind"] if isinstance(record["kind"], str) else ""]
-    while fields and fields[-1] in (None, ""):
+              data.once(data.ids, ids) if ids else None, record["kind"] if isinstance(record["kind"], str) else None]
+    while fields and fields[-1] is None:
         fields.pop()
     return fields
 
 
-def table_view(scene, diff: pd.DataFrame, register: dict[str, Deviation], blocks: dict, labels: dict) -> dict:
-    """The published table as printed for the template (rows, columns: their ids, words and
-    unit) and its cells for the page's data (``data``): per row, per column, the printed text,
-    half a unit of its last digit, its significant digits, its trail block (listing lines and
-    the scene's ``trail_notes``, kept once a page in ``blocks``) and per engine (ENGINES'
-    order) ``_engine_record``; null where the table prints no cell.  The page's script colours
+def _engines(here: dict[str, dict], printed: int, data: PageData) -> list:
+    """Each engine's record (ENGINES' order; None where it has none), one the same as an earlier
+    engine's (the port with the listing's bugs as legacy, bit for bit) given as that engine's index."""
+    shown = [_engine_record(here[e], printed, data) if e in here else None for e in ENGINES]
+    return [next((j for j in range(k) if shown[j] == record), record)
+            if record is not None else None for k, record in enumerate(shown)]
+
+
+def table_view(scene, diff: pd.DataFrame, register: dict[str, Deviation], data: PageData) -> dict:
+    """The published table as printed for the template (rows of texts; columns: their ids,
+    words and unit); its cells go into ``data.tables[scene.name]``: per row, per column, the
+    printed text, half a unit of its last digit, its significant digits, its trail block and
+    per engine ``_engines``; null where the table prints no cell.  The page's script colours
     the cells, writes their digits markers and hover text from it."""
     key = scene.key_name
     classes = classify_cells(diff, register)
@@ -180,30 +211,29 @@ def table_view(scene, diff: pd.DataFrame, register: dict[str, Deviation], blocks
     for record in diff.assign(row_key=diff[key].astype(str)).to_dict("records"):
         records.setdefault(record["row_key"], {}).setdefault(record["column"], {})[record["engine"]] = record
     columns = [c for c in scene.values if c in set(diff["column"])]
-    rows, data = [], []
+    rows, cells = [], []
     for row_key, by_column in records.items():
-        texts, cells = [], []
+        texts, row = [], []
         for column in columns:
             here = by_column.get(column)
             if not here:
                 texts.append(None)
-                cells.append(None)
+                row.append(None)
                 continue
             first = next(iter(here.values()))
             text = str(first["published_text"])
             printed = printed_digits(text)
             lines = tuple(line for s in scene.statements(str(first[key]), column) for line in listing_lines.find(s))
-            block = blocks.setdefault((lines, tuple(scene.trail_notes(str(first[key]), column))), len(blocks))
+            block = data.once(data.blocks, (lines, tuple(scene.trail_notes(str(first[key]), column))))
             texts.append(text)
-            cells.append([text, float(first["half_unit"]), printed, block,
-                          *[_engine_record(here[e], printed) if e in here else None for e in ENGINES]])
+            row.append([text, float(first["half_unit"]), printed, block, *_engines(here, printed, data)])
         rows.append({"key": row_key, "texts": texts})
-        data.append(cells)
+        cells.append(row)
     heads = [_column_head(scene, c) for c in columns]
+    data.tables[scene.name] = {"columns": columns, "labels": [data.once(data.labels, h["label"]) for h in heads],
+                               "rows": list(records), "cells": cells}
     return {"key_heads": [_column_head(scene, k) for k in scene.keys], "columns": heads, "rows": rows,
-            "source": published_source(scene.table),
-            "data": {"columns": columns, "labels": [labels.setdefault(h["label"], len(labels)) for h in heads],
-                     "rows": list(records), "cells": data}}
+            "source": published_source(scene.table)}
 
 
 def overview(counts: pd.DataFrame) -> list[dict]:
@@ -226,7 +256,7 @@ def figures(folder: Path) -> list[dict]:
     return shown
 
 
-def _scene_view(folder: "Folder", section: "SceneSection", register, blocks, tables, labels) -> dict:
+def _scene_view(folder: "Folder", section: "SceneSection", register, data: PageData) -> dict:
     view = {"kind": "scene", "name": section.name, "title": section.title, "problem": section.problem,
             "outcome": section.outcome, "figures": [], "table": None, "overview": "", "counts": [], "assumptions": []}
     if section.outcome is None:
@@ -237,8 +267,7 @@ def _scene_view(folder: "Folder", section: "SceneSection", register, blocks, tab
     view["figures"] = figures(here) if here.is_dir() else []
     if section.name in TABLES and (here / "diff.csv").is_file():
         diff = read_diff(TABLES[section.name], folder.out_dir)
-        view["table"] = table_view(SCENES[section.name], diff, register, blocks, labels)
-        tables[section.name] = view["table"].pop("data")
+        view["table"] = table_view(SCENES[section.name], diff, register, data)
         if section.outcome.counts is not None:
             view["counts"] = overview(section.outcome.counts)
         view["used"] = {i for ids in diff["register_ids"].fillna("") for i in str(ids).split()}
@@ -280,10 +309,8 @@ def render(folder: "Folder", latest: str = "") -> str:
     """The page's HTML over what ``folder`` holds (``report_folder.collect``); ``latest``: a line
     on the run that just ended."""
     register = register_mod.load()
-    blocks: dict[tuple, str] = {}
-    tables: dict[str, dict] = {}         # scene: its table's cells (``table_view``'s data)
-    labels: dict[str, int] = {}          # the columns' words, each once (a column holds its index)
-    sections = [_scene_view(folder, s, register, blocks, tables, labels) if s.kind == "scene" else _output_view(folder, s)
+    data = PageData()
+    sections = [_scene_view(folder, s, register, data) if s.kind == "scene" else _output_view(folder, s)
                 for s in folder.sections]
     used = set().union(*(s.get("used", set()) for s in sections))
     totals = folder.cell_totals()
@@ -296,6 +323,5 @@ def render(folder: "Folder", latest: str = "") -> str:
         made=(manifest.TITLE, markdown_html("\n".join(manifest.summary(folder.out_dir)))),
         entries=[_entry(register[i]) for i in sorted(used) if i in register],
         blocks={block: {"notes": notes, "lines": [_line(line) for line in lines]}
-                for (lines, notes), block in blocks.items()},
-        cells_json=json.dumps({"engines": ENGINES, "statuses": CELL_STATUSES, "labels": list(labels), "tables": tables},
-                              separators=(",", ":")).replace("</", "<\\/"))
+                for (lines, notes), block in data.blocks.items()},
+        cells_json=data.json())

@@ -274,8 +274,9 @@ class _Page(HTMLParser):
             self.total, self._in, self._text = "".join(self._text).strip(), None, None
         elif tag == "script" and self._in == "cells":       # per cell: per engine [status, ...] or null
             data, self._in, self._text = json.loads("".join(self._text)), None, None
-            self.cells = [{e: data["statuses"][c[4 + k][0]] for k, e in enumerate(data["engines"]) if c[4 + k]}
-                          for table in data["tables"].values() for row in table["cells"] for c in row if c]
+            records = [[c[4 + e] if isinstance(e, int) else e for e in c[4:]]     # an int: an earlier engine's
+                       for table in data["tables"].values() for row in table["cells"] for c in row if c]
+            self.cells = [{e: data["statuses"][r[0]] for e, r in zip(data["engines"], rs) if r} for rs in records]
 
 
 def test_html_overview_shows_the_counts(fresh, expected):
