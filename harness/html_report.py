@@ -43,7 +43,7 @@ if TYPE_CHECKING:
 TEMPLATES = Path(__file__).resolve().parent / "templates"
 #: the page's size budget (bytes) for a full run's folder (reproduce, bench, arithmetic): a page to
 #: open and read, not a data dump; ``report_folder.write`` warns ``PageSizeWarning`` beyond it
-PAGE_BUDGET = 3_000_000
+PAGE_BUDGET = 2_000_000
 #: a figure's encoding on the page: lossless (every pixel as in the PNG); ``method``/``quality``
 #: the encoder's effort: 3/25 is within 0.2 % of the smallest (6/100, 80 times slower), measured
 #: on the 22 figures of a full run: 651 against 863 kB of PNG
