@@ -2,15 +2,20 @@
 figures; nothing fetched when it is viewed), rendered with Jinja2 from ``templates/report.html.j2``
 over what ``report_folder.collect`` found in the folder.
 
-Per table scene: the published table in its printed layout, its columns headed in words and
-unit, each cell coloured by what it counts as for the engine chosen in the page's selector
+Per table scene: the published table in its printed layout, each column headed short (its id
+and unit; its words on hover) and the heads kept in view in the table's scroll box, each cell
+coloured by what it counts as for the engine chosen in the page's selector
 (``diff.classify_cells``: match, explained, within-tolerance, unresolved, unexplained,
-not-produced) with how
-many of its printed digits that engine reproduces; a click (or Enter) on a cell opens its
-trail (``harness/trail.py``): every engine's value, the register entries, the listing lines.
+not-produced) with how many of its printed digits that engine reproduces; a click (or Enter)
+on a cell opens its trail (``harness/trail.py``): every engine's value, the register entries,
+the listing lines.  The table's HTML holds only the printed texts: the page's script colours
+the cells and writes their markers and hover text from the cells' data (``PageData``, JSON),
+which keeps each repeated thing once.
 Per other scene and per command's output: its markdown rendered (markdown-it, CommonMark with
-tables).  Every section's figures with their captions (``figures.caption_of``), and an
-overview of every table and engine (``diff.count_cells``, the counts every report shows).
+tables), a command's ``###`` subsections folded behind ``<details>`` (``folded``).  Every
+section's figures with their captions (``figures.caption_of``), inline as lossless WebP
+(``data_uri``), and an overview of every table and engine (``diff.count_cells``, the counts
+every report shows).  A full run's page keeps within ``PAGE_BUDGET``.
 """
 from __future__ import annotations
 
