@@ -2,21 +2,29 @@
 figures; nothing fetched when it is viewed), rendered with Jinja2 from ``templates/report.html.j2``
 over what ``report_folder.collect`` found in the folder.
 
-Per table scene: the published table in its printed layout, its columns headed in words and
-unit, each cell coloured by what it counts as for the engine chosen in the page's selector
+Per table scene: the published table in its printed layout, each column headed short (its id
+and unit; its words on hover) and the heads kept in view in the table's scroll box, each cell
+coloured by what it counts as for the engine chosen in the page's selector
 (``diff.classify_cells``: match, explained, within-tolerance, unresolved, unexplained,
-not-produced) with how
-many of its printed digits that engine reproduces; a click (or Enter) on a cell opens its
-trail (``harness/trail.py``): every engine's value, the register entries, the listing lines.
+not-produced) with how many of its printed digits that engine reproduces; a click (or Enter)
+on a cell opens its trail (``harness/trail.py``): every engine's value, the register entries,
+the listing lines.  The table's HTML holds only the printed texts: the page's script colours
+the cells and writes their markers and hover text from the cells' data (``PageData``, JSON),
+which keeps each repeated thing once.
 Per other scene and per command's output: its markdown rendered (markdown-it, CommonMark with
-tables).  Every section's figures with their captions (``figures.caption_of``), and an
-overview of every table and engine (``diff.count_cells``, the counts every report shows).
+tables), a command's ``###`` subsections folded behind ``<details>`` (``folded``).  Every
+section's figures with their captions (``figures.caption_of``), inline as lossless WebP
+(``data_uri``), and an overview of every table and engine (``diff.count_cells``, the counts
+every report shows).  A full run's page keeps within ``PAGE_BUDGET``.
 """
 from __future__ import annotations
 
 import base64
+import io
 import json
 import math
+import re
+from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path, PurePosixPath
 from typing import TYPE_CHECKING
@@ -24,7 +32,7 @@ from typing import TYPE_CHECKING
 import jinja2
 import pandas as pd
 from markdown_it import MarkdownIt
-from PIL import Image
+from PIL import Image, features
 
 from . import figures as figures_mod, listing_lines, manifest, register as register_mod
 from .diff import CLASSES, COUNT_COLUMNS, EXPLAINED_BY, classify_cells, headline
@@ -40,7 +48,13 @@ if TYPE_CHECKING:
 TEMPLATES = Path(__file__).resolve().parent / "templates"
 #: the page's size budget (bytes) for a full run's folder (reproduce, bench, arithmetic): a page to
 #: open and read, not a data dump; ``report_folder.write`` warns ``PageSizeWarning`` beyond it
-PAGE_BUDGET = 3_000_000
+PAGE_BUDGET = 2_000_000
+#: a figure's encoding on the page: lossless (every pixel as in the PNG); ``method``/``quality``
+#: the encoder's effort: 3/25 is within 0.2 % of the smallest (6/100, 80 times slower), measured
+#: on the 22 figures of a full run: 651 against 863 kB of PNG
+WEBP = {"lossless": True, "method": 3, "quality": 25}
+#: the heading level (``###`` in a command's markdown) whose subsections the page folds
+FOLD_LEVEL = 3
 #: tagged src edits shown per register entry (the rest are counted)
 EDITS_SHOWN = 8
 #: what a cell is coloured as: ``diff.classify_cells``'s class, a matched cell shown as ``match``
@@ -50,7 +64,14 @@ CELL_STATUSES = tuple(SHOWN.get(c, c) for c in CLASSES)
 
 
 def data_uri(path: Path) -> str:
-    """A PNG or SVG file as a ``data:`` URI, for an ``<img>`` that needs no other file."""
+    """A PNG or SVG file as a ``data:`` URI, for an ``<img>`` that needs no other file: a PNG as
+    lossless WebP (``WEBP``: the same pixels in about 3/4 of the bytes, ~25 ms a figure), or as
+    itself where Pillow has no WebP."""
+    if path.suffix == ".png" and features.check("webp"):
+        buffer = io.BytesIO()
+        with Image.open(path) as image:
+            image.save(buffer, format="webp", **WEBP)
+        return "data:image/webp;base64," + base64.b64encode(buffer.getvalue()).decode("ascii")
     kind = "image/svg+xml" if path.suffix == ".svg" else "image/png"
     return f"data:{kind};base64," + base64.b64encode(path.read_bytes()).decode("ascii")
 
@@ -73,6 +94,49 @@ def markdown_html(text: str, base: PurePosixPath = PurePosixPath("."), breaks: b
     return md.render(text)
 
 
+HEADING = re.compile(r"<h([1-6])>.*?</h\1>\n?", re.S)
+
+
+def _inside(html: str) -> str:
+    """What a folded subsection holds, in words: its tables and their rows ("a table of 11
+    rows"), or its paragraphs."""
+    rows = [body.count("<tr>") for body in re.findall(r"<tbody>(.*?)</tbody>", html, re.S)]
+    if len(rows) == 1:
+        return f"a table of {rows[0]} row{'s' * (rows[0] != 1)}"
+    if rows:
+        return f"{len(rows)} tables, {sum(rows)} rows"
+    paragraphs = html.count("<p>")
+    return f"{paragraphs} paragraph{'s' * (paragraphs != 1)}"
+
+
+def folded(html: str, level: int = FOLD_LEVEL) -> str:
+    """``markdown_html``'s HTML with each subsection headed at ``level`` (up to the next heading
+    at that level or above) behind ``<details>``: its heading and what it holds (``_inside``)
+    are the summary, a reader opens the one wanted."""
+    out, start, open_at = [], 0, None
+
+    def close(end: int) -> None:
+        if open_at is not None:
+            head, body = html[open_at[0]:open_at[1]], html[open_at[1]:end]
+            out.append(f'<details class="fold"><summary>{head.rstrip()} <span class="inside">({_inside(body)})</span>'
+                       f"</summary>\n{body}</details>\n")
+    for match in HEADING.finditer(html):
+        depth = int(match.group(1))
+        if depth > level:
+            continue
+        close(match.start())
+        if open_at is None:
+            out.append(html[start:match.start()])
+        open_at = (match.start(), match.end()) if depth == level else None
+        if open_at is None:
+            out.append(match.group(0))
+        start = match.end()
+    close(len(html))
+    if open_at is None:
+        out.append(html[start:])
+    return "".join(out)
+
+
 def _line(line: listing_lines.ListingLine) -> dict:
     return {"where": line.where(), "text": line.text.rstrip(), "tier": line.tier}
 
@@ -92,54 +156,89 @@ def _number(value: float) -> str | None:
 
 def _column_head(scene, column: str) -> dict:
     what = scene.describe(column)
-    return {"id": column, "words": what.words, "unit": what.unit}
+    return {"id": column, "words": what.words, "unit": what.unit, "label": what.label}
 
 
-def table_view(scene, diff: pd.DataFrame, register: dict[str, Deviation], blocks: dict, cells: dict,
-               labels: dict) -> dict:
-    """The published table as printed (rows, columns in words and unit, what each cell counts
-    as per engine: CELL_STATUSES, and the printed digits each engine reproduces) for the
-    template; each cell's trail data goes into ``cells`` and its listing lines and the scene's
-    ``trail_notes`` into ``blocks``."""
+@dataclass
+class PageData:
+    """What the page's script reads (``cells-data``): per scene its published table's cells
+    (``table_view``), and what they repeat kept once, each cell holding its index: the columns'
+    words, the register ids' lists, the trail blocks (listing lines and the scene's notes,
+    shown from the page's templates)."""
+    tables: dict[str, dict] = field(default_factory=dict)
+    labels: dict[str, int] = field(default_factory=dict)
+    ids: dict[str, int] = field(default_factory=dict)
+    blocks: dict[tuple, int] = field(default_factory=dict)
+
+    @staticmethod
+    def once(kept: dict, value) -> int:
+        """``value``'s index in ``kept`` (added at its end the first time)."""
+        return kept.setdefault(value, len(kept))
+
+    def json(self) -> str:
+        """The page's data as JSON, safe inside ``<script>``."""
+        return json.dumps({"engines": ENGINES, "statuses": CELL_STATUSES, "labels": list(self.labels),
+                           "ids": [ids.split() for ids in self.ids], "tables": self.tables},
+                          separators=(",", ":")).replace("</", "<\\/")
+
+
+def _engine_record(record: dict, printed: int, data: PageData) -> list:
+    """One engine's side of a cell for the page's data: [status (index in CELL_STATUSES), value,
+    |difference|, digits reproduced, register ids (index in ``data.ids``), kind], the empty
+    fields at its end left out (the page's script reads them as empty: not produced is ``[5]``)."""
+    ids = " ".join(record["register_ids"].split()) if isinstance(record["register_ids"], str) else ""
+    fields = [CELL_STATUSES.index(record["shown"]), _number(float(record["value"])), _number(float(record["abs_diff"])),
+              digits_reproduced(float(record["abs_diff"]), float(record["half_unit"]), printed),
+              data.once(data.ids, ids) if ids else None, record["kind"] if isinstance(record["kind"], str) else None]
+    while fields and fields[-1] is None:
+        fields.pop()
+    return fields
+
+
+def _engines(here: dict[str, dict], printed: int, data: PageData) -> list:
+    """Each engine's record (ENGINES' order; None where it has none), one the same as an earlier
+    engine's (the port with the listing's bugs as legacy, bit for bit) given as that engine's index."""
+    shown = [_engine_record(here[e], printed, data) if e in here else None for e in ENGINES]
+    return [next((j for j in range(k) if shown[j] == record), record)
+            if record is not None else None for k, record in enumerate(shown)]
+
+
+def table_view(scene, diff: pd.DataFrame, register: dict[str, Deviation], data: PageData) -> dict:
+    """The published table as printed for the template (rows of texts; columns: their ids,
+    words and unit); its cells go into ``data.tables[scene.name]``: per row, per column, the
+    printed text, half a unit of its last digit, its significant digits, its trail block and
+    per engine ``_engines``; null where the table prints no cell.  The page's script colours
+    the cells, writes their digits markers and hover text from it."""
     key = scene.key_name
     classes = classify_cells(diff, register)
     diff = diff.assign(shown=classes["count"].map(lambda c: SHOWN.get(c, c)), kind=classes["kind"])
-    records: dict[str, dict[str, list[dict]]] = {}          # row key: column: the engines' records
+    records: dict[str, dict[str, dict[str, dict]]] = {}     # row key: column: engine: record
     for record in diff.assign(row_key=diff[key].astype(str)).to_dict("records"):
-        records.setdefault(record["row_key"], {}).setdefault(record["column"], []).append(record)
-    rows = []
+        records.setdefault(record["row_key"], {}).setdefault(record["column"], {})[record["engine"]] = record
+    columns = [c for c in scene.values if c in set(diff["column"])]
+    rows, cells = [], []
     for row_key, by_column in records.items():
-        shown = []
-        for column in scene.values:
+        texts, row = [], []
+        for column in columns:
             here = by_column.get(column)
             if not here:
+                texts.append(None)
+                row.append(None)
                 continue
-            first = here[0]
+            first = next(iter(here.values()))
             text = str(first["published_text"])
             printed = printed_digits(text)
-            engines = {}
-            for r in here:
-                ids = r["register_ids"] if isinstance(r["register_ids"], str) else ""
-                record = {"status": r["shown"], "kind": r["kind"], "value": _number(float(r["value"])),
-                          "difference": _number(float(r["abs_diff"])),
-                          "digits": digits_reproduced(float(r["abs_diff"]), float(r["half_unit"]), printed),
-                          "ids": ids.split()}
-                # the page's script reads an absent field as empty: leaving them out keeps the page small
-                engines[r["engine"]] = {k: v for k, v in record.items() if v is not None and v != "" and v != []}
-            cell_id = f"{scene.name}|{row_key}|{column}"
             lines = tuple(line for s in scene.statements(str(first[key]), column) for line in listing_lines.find(s))
-            block = blocks.setdefault((lines, tuple(scene.trail_notes(str(first[key]), column))), f"L{len(blocks)}")
-            cells[cell_id] = {"scene": scene.name, "row": row_key, "column": column,
-                              "label": labels.setdefault(scene.describe(column).label, len(labels)), "published": text,
-                              "half_unit": float(first["half_unit"]), "printed_digits": printed,
-                              "engines": engines, "lines": block}
-            shown.append({"id": cell_id, "text": text, "printed": printed, "column": column,
-                          "status": {e: v["status"] for e, v in engines.items()},
-                          "digits": {e: v.get("digits") for e, v in engines.items()}})
-        rows.append({"key": row_key, "cells": shown})
-    keys = [_column_head(scene, k) for k in scene.keys]
-    return {"key_heads": keys, "columns": [_column_head(scene, c) for c in scene.values if c in set(diff["column"])],
-            "rows": rows, "source": published_source(scene.table)}
+            block = data.once(data.blocks, (lines, tuple(scene.trail_notes(str(first[key]), column))))
+            texts.append(text)
+            row.append([text, float(first["half_unit"]), printed, block, *_engines(here, printed, data)])
+        rows.append({"key": row_key, "texts": texts})
+        cells.append(row)
+    heads = [_column_head(scene, c) for c in columns]
+    data.tables[scene.name] = {"columns": columns, "labels": [data.once(data.labels, h["label"]) for h in heads],
+                               "rows": list(records), "cells": cells}
+    return {"key_heads": [_column_head(scene, k) for k in scene.keys], "columns": heads, "rows": rows,
+            "source": published_source(scene.table)}
 
 
 def overview(counts: pd.DataFrame) -> list[dict]:
@@ -162,7 +261,7 @@ def figures(folder: Path) -> list[dict]:
     return shown
 
 
-def _scene_view(folder: "Folder", section: "SceneSection", register, blocks, cells, labels) -> dict:
+def _scene_view(folder: "Folder", section: "SceneSection", register, data: PageData) -> dict:
     view = {"kind": "scene", "name": section.name, "title": section.title, "problem": section.problem,
             "outcome": section.outcome, "figures": [], "table": None, "overview": "", "counts": [], "assumptions": []}
     if section.outcome is None:
@@ -173,7 +272,7 @@ def _scene_view(folder: "Folder", section: "SceneSection", register, blocks, cel
     view["figures"] = figures(here) if here.is_dir() else []
     if section.name in TABLES and (here / "diff.csv").is_file():
         diff = read_diff(TABLES[section.name], folder.out_dir)
-        view["table"] = table_view(SCENES[section.name], diff, register, blocks, cells, labels)
+        view["table"] = table_view(SCENES[section.name], diff, register, data)
         if section.outcome.counts is not None:
             view["counts"] = overview(section.outcome.counts)
         view["used"] = {i for ids in diff["register_ids"].fillna("") for i in str(ids).split()}
@@ -195,7 +294,7 @@ def _output_view(folder: "Folder", section: "OutputSection") -> dict:
                                          f"{manifest.code_span(section.command)} writes it again.**")
             return view
         body = text.split("\n", 1)[1] if text.startswith("# ") else text      # the section has its heading
-        view["html"] = markdown_html(body, PurePosixPath(section.folder.relative_to(folder.out_dir).as_posix()))
+        view["html"] = folded(markdown_html(body, PurePosixPath(section.folder.relative_to(folder.out_dir).as_posix())))
     return view
 
 
@@ -215,10 +314,8 @@ def render(folder: "Folder", latest: str = "") -> str:
     """The page's HTML over what ``folder`` holds (``report_folder.collect``); ``latest``: a line
     on the run that just ended."""
     register = register_mod.load()
-    blocks: dict[tuple, str] = {}
-    cells: dict[str, dict] = {}
-    labels: dict[str, int] = {}          # the columns' words, each once (a cell holds its index)
-    sections = [_scene_view(folder, s, register, blocks, cells, labels) if s.kind == "scene" else _output_view(folder, s)
+    data = PageData()
+    sections = [_scene_view(folder, s, register, data) if s.kind == "scene" else _output_view(folder, s)
                 for s in folder.sections]
     used = set().union(*(s.get("used", set()) for s in sections))
     totals = folder.cell_totals()
@@ -231,6 +328,5 @@ def render(folder: "Folder", latest: str = "") -> str:
         made=(manifest.TITLE, markdown_html("\n".join(manifest.summary(folder.out_dir)))),
         entries=[_entry(register[i]) for i in sorted(used) if i in register],
         blocks={block: {"notes": notes, "lines": [_line(line) for line in lines]}
-                for (lines, notes), block in blocks.items()},
-        cells_json=json.dumps(cells, separators=(",", ":")).replace("</", "<\\/"),
-        labels_json=json.dumps(list(labels), separators=(",", ":")).replace("</", "<\\/"))
+                for (lines, notes), block in data.blocks.items()},
+        cells_json=data.json())

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import contextlib
 import io
+import json
 import re
 from html.parser import HTMLParser
 from pathlib import Path
@@ -236,7 +237,7 @@ def test_scene_report_shows_the_counts(fresh, expected):
 
 class _Page(HTMLParser):
     """report.html's overview table (rows of cell texts), its total line, and every table cell's
-    data-<engine> attributes."""
+    status per engine (the page's cells data, from which its script sets data-<engine>)."""
 
     def __init__(self):
         super().__init__()
@@ -253,8 +254,8 @@ class _Page(HTMLParser):
             self._row = []
         elif tag in ("td", "th") and self._row is not None:
             self._text, self._count = [], attrs.get("data-count")
-        if tag == "td" and "cell" in (attrs.get("class") or "").split():
-            self.cells.append({k[5:]: v for k, v in attrs.items() if k.startswith("data-") and k != "data-cell"})
+        if tag == "script" and attrs.get("id") == "cells-data":
+            self._in, self._text = "cells", []
 
     def handle_data(self, data):
         if self._text is not None:
@@ -271,6 +272,11 @@ class _Page(HTMLParser):
             self._in = None
         elif tag == "p" and self._in == "total":
             self.total, self._in, self._text = "".join(self._text).strip(), None, None
+        elif tag == "script" and self._in == "cells":       # per cell: per engine [status, ...] or null
+            data, self._in, self._text = json.loads("".join(self._text)), None, None
+            records = [[c[4 + e] if isinstance(e, int) else e for e in c[4:]]     # an int: an earlier engine's
+                       for table in data["tables"].values() for row in table["cells"] for c in row if c]
+            self.cells = [{e: data["statuses"][r[0]] for e, r in zip(data["engines"], rs) if r} for rs in records]
 
 
 def test_html_overview_shows_the_counts(fresh, expected):

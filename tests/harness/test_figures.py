@@ -121,7 +121,8 @@ SCENES = ["ali1977-table1", "ali1977-table2", "ali1977-table3", "ali1977-appendi
 def test_every_figure_of_a_run_passed_the_checks_and_has_a_caption(tmp_path):
     """Run the scenes with the checks strict (conftest): a figure that broke a rule would have
     failed the run; every PNG was written by figures.save (a caption in words, a palette), reads
-    in a column of the page, and the scenes' folders hold their figures in reading order."""
+    in a column of the page, and the scenes' folders hold their figures in reading order; the run's
+    report.html, every published table on it, keeps within html_report.PAGE_BUDGET with room to spare."""
     from linkrepro.harness.cli import main
     assert os.environ.get(figures.STRICT_ENV)
     assert main(["reproduce", "--skip-readings", *SCENES, "--out", str(tmp_path)]) == 0
@@ -133,6 +134,11 @@ def test_every_figure_of_a_run_passed_the_checks_and_has_a_caption(tmp_path):
             assert image.mode == "P" and image.width <= figures.MAX_WIDTH_IN * figures.DPI, png
     assert [p.name for p in sorted((tmp_path / "ali1977-appendixA").glob("*.png"))] == [
         "case1.png", "case2.png", "case3.png"]
+    # the page of every published table and 18 of a full run's 22 figures leaves the budget room for the
+    # sections this run leaves out (bench, arithmetic, elastodynamics, the multibody scenes, rahman1991-example:
+    # 0.36 MB of a full run's 1.39 MB page, measured 2026-11-28)
+    from linkrepro.harness.html_report import PAGE_BUDGET
+    assert (tmp_path / "report.html").stat().st_size <= PAGE_BUDGET - 400_000
 
 
 def test_a_run_whose_figure_breaks_a_rule_fails(tmp_path, monkeypatch):

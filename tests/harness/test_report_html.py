@@ -75,7 +75,25 @@ def test_page_is_self_contained(run_dir):
     assert refs.links == 0
     outside = [u for u in refs.urls if not (u.startswith("data:") or u.startswith("#") or (run_dir / u).is_file())]
     assert outside == []
-    assert any(u.startswith("data:image/png;base64,") for u in refs.urls)     # the table's figure
+    assert any(u.startswith("data:image/webp;base64,") for u in refs.urls)     # the table's figure
+
+
+def test_every_figure_is_on_the_page_pixel_for_pixel(run_dir):
+    """A figure is embedded smaller (lossless WebP) but every pixel as in its PNG (decoded by Pillow)."""
+    import base64
+    import io
+
+    from PIL import Image
+
+    def pixels(image) -> bytes:
+        return image.convert("RGB").tobytes() + repr(image.size).encode()
+    refs = _Refs()
+    refs.feed((run_dir / "report.html").read_text())
+    embedded = [base64.b64decode(u.split(",", 1)[1]) for u in refs.urls if u.startswith("data:image/")]
+    shown = sorted(pixels(Image.open(io.BytesIO(data))) for data in embedded)
+    pngs = sorted(run_dir.rglob("*.png"))
+    assert len(pngs) >= 2 and shown == sorted(pixels(Image.open(png)) for png in pngs)
+    assert sum(map(len, embedded)) < 0.85 * sum(png.stat().st_size for png in pngs)
 
 
 def test_explain_prints_the_trail(run_dir):
@@ -218,6 +236,33 @@ def test_every_section_is_rendered_and_none_is_lost_by_a_rerun(page):
     shot(page, "top")
 
 
+def test_the_bench_s_subsections_are_folded_and_say_what_they_hold(page):
+    """Each ### subsection of the bench is a <details>: its summary is its heading and its table's
+    rows (counted here in the table), a click opens it; folded, a subsection takes its summary's
+    line or two, open, its table's height more."""
+    from selenium.webdriver.common.by import By
+    bench = page.find_element(By.ID, "bench")
+    folds = bench.find_elements(By.CSS_SELECTOR, "details.fold")
+    assert len(folds) >= 3 and not any(f.get_attribute("open") for f in folds)
+    line = page.execute_script("return parseFloat(getComputedStyle(arguments[0]).lineHeight)", bench)
+    for fold in folds:
+        rows = len(fold.find_elements(By.CSS_SELECTOR, "tbody tr"))
+        summary = fold.find_element(By.TAG_NAME, "summary")
+        assert summary.find_element(By.TAG_NAME, "h3").text and f"a table of {rows} row" in summary.text
+        assert rect(page, fold)["height"] < 3 * line
+    fold = max(folds, key=lambda f: len(f.find_elements(By.CSS_SELECTOR, "tbody tr")))      # the longest table
+    page.execute_script("arguments[0].scrollIntoView({block: 'center'})", fold)
+    fold.find_element(By.TAG_NAME, "summary").click()
+    table = fold.find_element(By.TAG_NAME, "table")
+    assert table.is_displayed() and rect(page, fold)["height"] > rect(page, table)["height"] + line
+    # scrolled past its top, the table's heads stay under the page's header
+    header, head = page.find_element(By.TAG_NAME, "header"), table.find_element(By.CSS_SELECTOR, "thead th")
+    page.execute_script("scrollBy(0, arguments[0].getBoundingClientRect().top - arguments[1].offsetHeight + 2 * arguments[2])",
+                        table, header, line)
+    assert rect(page, table)["top"] < rect(page, header)["bottom"] - line
+    assert abs(rect(page, head)["top"] - rect(page, header)["bottom"]) < 1.5
+
+
 def test_each_heading_is_clear_of_the_header_after_its_link_is_clicked(page):
     from selenium.webdriver.common.by import By
     links = page.find_elements(By.CSS_SELECTOR, "header nav a")
@@ -238,8 +283,7 @@ def test_each_heading_is_clear_of_the_header_after_its_link_is_clicked(page):
 
 def test_the_panel_fits_and_leaves_the_cell_in_view(page):
     from selenium.webdriver.common.by import By
-    columns = [th.find_element(By.CSS_SELECTOR, ".id").text
-               for th in page.find_elements(By.CSS_SELECTOR, f"#{SCENE} table.published tr:first-child th")]
+    columns = [head for head, _ in heads(page)]
     for column in (COLUMN, columns[-1]):                       # a middle column, and the last one
         cell = page.find_element(By.CSS_SELECTOR, f'td.cell[data-cell="{SCENE}|{ROW}|{column}"]')
         page.execute_script("arguments[0].scrollIntoView({block: 'center'})", cell)
@@ -272,12 +316,51 @@ def test_figures_are_shown_at_their_natural_size_and_the_overview_fits(page):
     assert all(w == natural for w, natural in page.execute_script(sizes))
 
 
-def test_columns_are_headed_in_words_with_their_unit_and_id(page):
+def heads(browser) -> list[tuple[str, str]]:
+    """The published table's column heads: (the text shown, the hover text)."""
+    return browser.execute_script(f"""return [...document.querySelectorAll('#{SCENE} table.published thead th')]
+        .map(th => [th.firstChild.textContent, th.title])""")
+
+
+def test_columns_are_headed_short_with_their_words_and_unit_on_hover(page):
+    """A head shows the column's id and unit (two short lines, not seven); its words and unit
+    (quantities.describe) are its hover text."""
     from selenium.webdriver.common.by import By
-    heads = page.find_elements(By.CSS_SELECTOR, f"#{SCENE} table.published tr:first-child th")
-    texts = [h.text for h in heads]
-    assert any(t.startswith("input-link rotation (deg)") for t in texts[:1]), texts
-    assert all("(in)" in t for t in texts[1:]) and texts[3].endswith(COLUMN), texts
+    shown = heads(page)
+    assert [title for _, title in shown] == [describe(SCENE, column).label for column, _ in shown]
+    assert shown[3][0] == COLUMN and "(in)" in shown[3][1] and shown[0][1].endswith("(deg)"), shown
+    row = page.find_element(By.CSS_SELECTOR, f"#{SCENE} table.published thead tr")
+    line = page.execute_script("return parseFloat(getComputedStyle(arguments[0]).lineHeight)", row)
+    assert rect(page, row)["height"] < 3 * line                  # the id and the unit, each on one line
+
+
+def test_a_long_table_keeps_its_column_heads_in_view(run_dir):
+    """At a short window the table scrolls inside its box, its heads stay at the box's top (and
+    above the cells); the panel still opens on a cell scrolled to."""
+    from selenium.webdriver.common.by import By
+    browser = _browser((1280, 600))
+    try:
+        browser.get((run_dir / "report.html").as_uri())
+        box = browser.find_element(By.CSS_SELECTOR, f"#{SCENE} .scroll")
+        browser.execute_script("arguments[0].scrollIntoView(); scrollBy(0, -document.querySelector('header').offsetHeight)", box)
+        assert browser.execute_script("return arguments[0].scrollHeight > arguments[0].clientHeight", box)
+        head = box.find_element(By.CSS_SELECTOR, "thead th:nth-child(4)")
+        browser.execute_script("arguments[0].scrollTop = arguments[0].scrollHeight", box)
+        assert browser.execute_script("return arguments[0].scrollTop", box) > 0
+        assert abs(rect(browser, head)["top"] - rect(browser, box)["top"]) < 1.5
+        middle = rect(browser, head)
+        top = browser.execute_script("return document.elementFromPoint(arguments[0], arguments[1])",
+                                     middle["left"] + middle["width"] / 2, middle["top"] + middle["height"] / 2)
+        assert browser.execute_script("return arguments[0].closest('th') === arguments[1]", top, head)
+        shot(browser, "sticky")
+        last = box.find_elements(By.CSS_SELECTOR, "td.cell")[-1]
+        last.click()
+        assert browser.find_element(By.ID, "panel").is_displayed()
+        assert browser.execute_script("return document.elementFromPoint(...arguments) !== null",
+                                      rect(browser, last)["left"] + 2, rect(browser, last)["top"] + 2)
+        assert [e for e in browser.get_log("browser") if e["level"] == "SEVERE"] == []
+    finally:
+        browser.quit()
 
 
 def test_a_copied_cell_is_its_value_and_the_digits_marker_says_what_it_means(page):
@@ -288,6 +371,10 @@ def test_a_copied_cell_is_its_value_and_the_digits_marker_says_what_it_means(pag
     assert copied.strip() == "-0.655"
     marker = cell.find_element(By.CSS_SELECTOR, '.digits[data-engine="legacy"]')
     assert marker.text == "0/3" and "0 of the 3 printed digits" in marker.get_attribute("title")   # a misprinted sign
+    hover = dict(part.split(": ") for part in cell.get_attribute("title").split("; "))
+    assert set(hover) == {"printed", "legacy", "port_printed", "port_corrected"}
+    assert all(hover[engine] == cell.get_attribute(f"data-{engine}") for engine in hover)
+    assert hover["legacy"] == "explained"                        # the misprint, an entry of the register
     matched = page.find_element(By.CSS_SELECTOR, f'td.cell[data-cell="{SCENE}|0|{COLUMN}"] .digits[data-engine="legacy"]')
     assert matched.text == "3/3"                               # a match reproduces every printed digit
 
