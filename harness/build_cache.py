@@ -18,6 +18,8 @@ executable is copied out of the entry and run from the caller's folder, against 
 FORTRAN libraries of this machine (``run``: a thread's fork may hold a file just written open
 until the child execs, and running it then fails with ETXTBSY; it is tried again).  A folder
 that cannot be read or written is no cache: the build runs as without one.  Removing the folder empties the cache.
+``fetch`` and ``store`` keep other derived bytes the same way (the report page's WebP figures,
+``html_report.data_uri``), each named by the SHA-256 of what makes it.
 """
 from __future__ import annotations
 
@@ -97,13 +99,9 @@ def executable(entry: str | None, exe: Path, build: Callable[[], None]) -> bool:
 
 
 def _fetch(entry: str, exe: Path) -> bool:
-    try:
-        data = (folder() / entry).read_bytes()
-    except OSError:
+    payload = fetch(entry)
+    if payload is None:
         return False
-    digest, payload = data[:DIGEST_LEN], data[DIGEST_LEN + 1:]
-    if data[DIGEST_LEN:DIGEST_LEN + 1] != b"\n" or hashlib.sha256(payload).hexdigest().encode() != digest:
-        return False                                   # damaged or cut short: built again
     exe.write_bytes(payload)
     exe.chmod(0o755)
     return True
@@ -111,8 +109,34 @@ def _fetch(entry: str, exe: Path) -> bool:
 
 def _store(entry: str, exe: Path) -> None:
     try:
-        payload = exe.read_bytes()
-        target = folder()
+        store(entry, exe.read_bytes())
+    except OSError:
+        pass                                           # nothing to store: the build stands
+
+
+def fetch(entry: str) -> bytes | None:
+    """The bytes stored under ``entry`` (a SHA-256 in hex), or None when the cache holds no
+    whole entry (none, off, damaged or cut short)."""
+    where = folder()
+    if where is None:
+        return None
+    try:
+        data = (where / entry).read_bytes()
+    except OSError:
+        return None
+    digest, payload = data[:DIGEST_LEN], data[DIGEST_LEN + 1:]
+    if data[DIGEST_LEN:DIGEST_LEN + 1] != b"\n" or hashlib.sha256(payload).hexdigest().encode() != digest:
+        return None
+    return payload
+
+
+def store(entry: str, payload: bytes) -> None:
+    """Store ``payload`` under ``entry``, whole or not at all (a temporary file renamed); a
+    cache that is off or cannot be written stores nothing."""
+    target = folder()
+    if target is None:
+        return
+    try:
         target.mkdir(parents=True, exist_ok=True)
         handle, temporary = tempfile.mkstemp(dir=target, prefix=f".{entry[:16]}-", suffix=".tmp")
         try:
@@ -123,7 +147,7 @@ def _store(entry: str, exe: Path) -> None:
             Path(temporary).unlink(missing_ok=True)
             raise
     except OSError:
-        pass                                           # no cache to write: the build stands
+        pass                                           # no cache to write: the caller has its bytes
 
 
 def run(command: Sequence[str], **kwargs) -> subprocess.CompletedProcess:

@@ -20,6 +20,7 @@ every report shows).  A full run's page keeps within ``PAGE_BUDGET``.
 from __future__ import annotations
 
 import base64
+import hashlib
 import io
 import json
 import math
@@ -32,9 +33,10 @@ from typing import TYPE_CHECKING
 import jinja2
 import pandas as pd
 from markdown_it import MarkdownIt
+import PIL
 from PIL import Image, features
 
-from . import figures as figures_mod, listing_lines, manifest, register as register_mod
+from . import build_cache, figures as figures_mod, listing_lines, manifest, register as register_mod
 from .diff import CLASSES, COUNT_COLUMNS, EXPLAINED_BY, classify_cells, headline
 from .engines import ENGINES
 from .register import Deviation
@@ -65,15 +67,27 @@ CELL_STATUSES = tuple(SHOWN.get(c, c) for c in CLASSES)
 
 def data_uri(path: Path) -> str:
     """A PNG or SVG file as a ``data:`` URI, for an ``<img>`` that needs no other file: a PNG as
-    lossless WebP (``WEBP``: the same pixels in about 3/4 of the bytes, ~25 ms a figure), or as
-    itself where Pillow has no WebP."""
+    lossless WebP (``webp``), or as itself where Pillow has no WebP."""
     if path.suffix == ".png" and features.check("webp"):
-        buffer = io.BytesIO()
-        with Image.open(path) as image:
-            image.save(buffer, format="webp", **WEBP)
-        return "data:image/webp;base64," + base64.b64encode(buffer.getvalue()).decode("ascii")
+        return "data:image/webp;base64," + base64.b64encode(webp(path.read_bytes())).decode("ascii")
     kind = "image/svg+xml" if path.suffix == ".svg" else "image/png"
     return f"data:{kind};base64," + base64.b64encode(path.read_bytes()).decode("ascii")
+
+
+def webp(png: bytes) -> bytes:
+    """A PNG's pixels as lossless WebP (``WEBP``: about 3/4 of the bytes), from the user cache
+    when it holds them (``build_cache.fetch``, named by the PNG's bytes, the settings and
+    Pillow's version): encoding takes ~25 ms of CPU a figure, 0.5 s over a full run's page,
+    which every report write would pay again for figures that a run rewrites bit for bit."""
+    entry = hashlib.sha256(repr(("webp", WEBP, PIL.__version__)).encode() + png).hexdigest()
+    cached = build_cache.fetch(entry)
+    if cached is not None:
+        return cached
+    buffer = io.BytesIO()
+    with Image.open(io.BytesIO(png)) as image:
+        image.save(buffer, format="webp", **WEBP)
+    build_cache.store(entry, buffer.getvalue())
+    return buffer.getvalue()
 
 
 def markdown_html(text: str, base: PurePosixPath = PurePosixPath("."), breaks: bool = False) -> str:

@@ -155,3 +155,31 @@ def test_readings_from_the_cache_equal_cold_builds(cache, monkeypatch):
     for cold, from_cache in zip(*measured):
         assert not cold.empty
         assert_frame_equal(cold, from_cache)
+
+
+def test_the_pages_webp_figures_are_cached_pixel_for_pixel(cache, monkeypatch):
+    """report.html's figures (lossless WebP) come from the cache on a second write, the same
+    pixels as the PNG; a damaged entry is encoded again."""
+    import io
+
+    import numpy as np
+    from PIL import Image, features
+
+    from linkrepro.harness import html_report
+    if not features.check("webp"):
+        pytest.skip("Pillow without WebP: the page embeds the PNG itself")
+    pixels = np.random.default_rng(7).integers(0, 256, (40, 60, 3), dtype=np.uint8)
+    buffer = io.BytesIO()
+    Image.fromarray(pixels).save(buffer, format="png")
+    png = buffer.getvalue()
+    first = html_report.webp(png)
+    assert np.array_equal(np.asarray(Image.open(io.BytesIO(first)).convert("RGB")), pixels)
+    entry, = cache.iterdir()
+
+    def no_encoding(*args, **kwargs):
+        raise AssertionError("encoded again: the cache was not read")
+    with monkeypatch.context() as patched:
+        patched.setattr(Image.Image, "save", no_encoding)
+        assert html_report.webp(png) == first
+    entry.write_bytes(entry.read_bytes()[:-10])                           # cut short: encoded again, stored whole
+    assert html_report.webp(png) == first and build_cache.fetch(entry.name) == first
