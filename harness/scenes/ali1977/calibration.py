@@ -45,7 +45,7 @@ from ....port.ali1977.quirks import CORRECTED
 from ....port.ali1977.structure import GRAVITY_IN, GRAVITY_REAL4, Section
 from ...csv_output import FULL_PRECISION, write_csv
 from . import exact, poles
-from .commands import DRAWS, SEED, TITLE
+from .calibration_settings import DRAWS, SEED, TITLE
 
 #: the programs, their port functions and their weight's name
 PROGRAMS = {"case1_source": case1.source_case1, "case1_cognate": case1.cognate_case1,

@@ -1,16 +1,12 @@
 """Ali (1977)'s own command: ``linkrepro ked-bound`` (the K.E.D. error bound's calibration
-sample, ``calibration.py``, which does the work and imports every Ali engine: not here, since
-the parser reads this module for ``linkrepro --help``)."""
+sample, ``calibration.py``, which does the work and imports every Ali engine when it runs: not
+here, since the parser reads this module for ``linkrepro --help``)."""
 from __future__ import annotations
 
 from pathlib import Path
 
 from ...command import Command
-
-TITLE = "Ali (1977): the K.E.D. engines' error bound on random geometries and sections, Cases I-III"
-#: the sample's defaults: 1250 draws of four runs each
-SEED, DRAWS = 0, 1250
-OUTPUTS = ("calibration.csv", "summary.csv", "calibration.md")
+from .calibration_settings import DRAWS, OUTPUTS, SEED, TITLE
 
 
 def _arguments(parser) -> None:

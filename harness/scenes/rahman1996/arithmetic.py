@@ -41,7 +41,7 @@ from ...published_tables import PublishedTable
 from ...readings import CompilerError
 from .arithmetic_build import Measurement, ReferenceFailed, measure
 from .arithmetic_variants import VARIANTS, get
-from .commands import OUTPUTS, RECORD, TITLE
+from .arithmetic_settings import OUTPUTS, RECORD, TITLE
 
 TABLES = ("5_1", "5_2", "5_3", "5_4", "5_5", "5_6", "5_7")
 #: the series tables (crank 0-360 deg), whose cells the reading driver counts

@@ -1,16 +1,12 @@
 """Rahman (1996)'s own command: ``linkrepro arithmetic`` (the arithmetic study: arithmetic.py,
-its variants and its build, which do the work and import numpy and pandas: not here, since the
-parser reads this module for ``linkrepro --help``)."""
+its variants and its build, which do the work and import numpy and pandas when it runs: not
+here, since the parser reads this module for ``linkrepro --help``)."""
 from __future__ import annotations
 
 from pathlib import Path
 
 from ...command import Command
-
-TITLE = "Rahman (1996): which digits survive a change of arithmetic"
-OUTPUTS = ("arithmetic.csv", "arithmetic_cells.csv", "arithmetic.md")
-#: which arithmetics reach each published cell's printed digit, as ``--record`` last wrote it
-RECORD = Path(__file__).with_name("arithmetic_reached.csv")
+from .arithmetic_settings import OUTPUTS, RECORD, TITLE
 
 
 def _arguments(parser) -> None:
