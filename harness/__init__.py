@@ -6,12 +6,7 @@ words, and its unit.  Both are imported when first used (the scenes import every
 """
 from __future__ import annotations
 
-_LAZY = {"load": "results", "describe": "results"}
-__all__ = list(_LAZY)
+from .lazy import deferred
 
-
-def __getattr__(name: str):
-    if name in _LAZY:
-        import importlib
-        return getattr(importlib.import_module(f"{__name__}.{_LAZY[name]}"), name)
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+__all__ = ["load", "describe"]
+__getattr__ = deferred(__name__, "results", __all__)

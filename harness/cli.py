@@ -309,11 +309,11 @@ def _verify(args: argparse.Namespace) -> int:
 
 
 def _differential_parser(sub) -> _Parser:
-    from .scenes import THESES
+    from .scenes import thesis_names
     own = sub.add_parser("differential", help="legacy against the port with the listing's bugs on a random sample "
                          "of a thesis's geometries (or on given ones): where they differ (status 1 if anywhere)")
     own.add_argument("theses", nargs="+", metavar="THESIS",
-                     help=f"one or more of {', '.join(t.__name__.rpartition('.')[2] for t in THESES)}")
+                     help=f"one or more of {', '.join(thesis_names())}")
     own.add_argument("--samples", type=_repeat, default=None, help="geometries per program, >= 1 (default 100)")
     own.add_argument("--seed", type=_seed, default=1, help="the sampler's seed, >= 0 (numpy default_rng; default 1)")
     own.add_argument("--out", default=Path("out/differential"), type=_out_folder,
@@ -405,9 +405,9 @@ def _report_of_parent(out: Path, folder: str) -> int:
 
 
 def _main(argv: list[str] | None) -> int:
-    from .manifest import command_line
     parser, commands, theirs = _parser()
     args = parser.parse_args(argv)
+    from .manifest import command_line     # after --help and a bad command line: it imports pandas
     args.line = command_line(sys.argv[1:] if argv is None else argv)       # for the run's manifest.json
     if args.command == "scenes":
         titles = _scene_titles()

@@ -5,14 +5,16 @@ a failed run, 130 for Ctrl-C).
 Most cases call ``main`` in this process, as the script does (anything escaping ``main``
 other than its exit would be a traceback); a few run it as a user does, in a child process,
 as ``python -m linkrepro`` and as the ``linkrepro`` script next to the interpreter (each
-child pays the 2-3 s import of every scene).  No test runs a long reproduction: the one run
-through every engine is rahman1996-table5_1 (about 3 s; `linkrepro scenes` lists the scenes).
+child that runs or lists scenes pays the 2-3 s import of every scene; ``--help`` does not).  No
+test runs a long reproduction: the one run through every engine is rahman1996-table5_1 (about
+3 s; `linkrepro scenes` lists the scenes).
 """
 from __future__ import annotations
 
 import contextlib
 import errno
 import io
+import json
 import os
 import signal
 import subprocess
@@ -88,6 +90,66 @@ def test_help(via, tmp_path):
     assert done.stdout.startswith("usage: linkrepro") and "reproduce" in done.stdout
     done = run("reproduce", "--help", via=via, cwd=tmp_path)
     assert done.returncode == 0 and "--out" in done.stdout and "--skip-readings" in done.stdout
+
+
+#: what ``--help`` and ``--version`` must not import: the libraries the engines are written with
+#: (numpy alone adds 99 modules; --help took 2.1 s of CPU when it imported them all, 0.13 s now,
+#: measured 2026-11-28), and linkrepro's engines (the port, the FORTRAN's f2py extensions in
+#: legacy/) and scenes
+HEAVY = ("numpy", "pandas", "numba", "llvmlite", "matplotlib", "scipy", "exudyn", "quadprog", "mpmath", "jinja2",
+         "PIL", "linkrepro.port", "linkrepro.legacy", "linkrepro.harness.scene", "linkrepro.harness.table_scene")
+#: the modules they may import beyond the standard library their modules are written with: 15
+#: today (linkrepro, its errors, the harness, cli, blas_threads, command, lazy, the registry, the
+#: three theses' packages, and the two theses' commands modules with their settings); room for a
+#: thesis more with a command (three) and a light module or two, while any engine library
+#: brings a hundred
+LIGHT_MODULES = 20
+#: a fresh interpreter: the modules the standard library of the CLI's light modules adds (and
+#: argparse's formatter, textwrap), then those that ``main(arguments)`` adds beyond them
+_IMPORTS = """
+import contextlib, io, json, sys
+before = set(sys.modules)
+import __future__, argparse, dataclasses, difflib, functools, importlib, math, os, pathlib, pkgutil, textwrap, typing
+standard = set(sys.modules)
+from linkrepro.harness.cli import main
+with contextlib.redirect_stdout(io.StringIO()):
+    try:
+        status = main(sys.argv[1:])
+    except SystemExit as exc:
+        status = exc.code
+print(json.dumps({"status": status, "new": sorted(set(sys.modules) - before),
+                  "beyond": sorted(set(sys.modules) - standard)}))
+"""
+
+
+def _imported(cwd: Path, *arguments: str) -> dict:
+    """What ``main(arguments)`` imports in a fresh interpreter (``_IMPORTS``), and its status."""
+    done = subprocess.run([sys.executable, "-c", _IMPORTS, *arguments], capture_output=True, text=True, cwd=cwd,
+                          env=_env(), timeout=CHILD_SECONDS, stdin=subprocess.DEVNULL)
+    assert done.returncode == 0, done.stderr
+    return json.loads(done.stdout)
+
+
+@pytest.mark.parametrize("argument", ["--help", "--version"])
+def test_help_and_version_import_no_engine(argument, tmp_path):
+    imported = _imported(tmp_path, argument)
+    assert imported["status"] == 0
+    heavy = [name for name in imported["new"] if any(name == root or name.startswith(f"{root}.") for root in HEAVY)]
+    assert heavy == []
+    scenes = [name for name in imported["new"]
+              if name.startswith("linkrepro.harness.scenes") and name.endswith(".catalog")]
+    assert scenes == []                         # the registry's or a thesis's scenes (harness/lazy.py)
+    assert "linkrepro.harness.cli" in imported["beyond"]
+    assert len(imported["beyond"]) <= LIGHT_MODULES, imported["beyond"]
+
+
+def test_the_import_check_sees_an_engine(tmp_path):
+    """The check above can fail: ``verify`` imports numpy and pandas before it reads its
+    arguments (a bad ``--units``: status 2)."""
+    imported = _imported(tmp_path, "verify", "--units", "-1")
+    assert imported["status"] == 2
+    assert {"numpy", "pandas"} <= set(imported["new"])
+    assert len(imported["beyond"]) > LIGHT_MODULES
 
 
 def test_module_and_script_list_the_same_scenes(tmp_path):

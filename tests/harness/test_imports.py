@@ -5,8 +5,9 @@ resolved, those inside functions included, those under ``if TYPE_CHECKING:`` lef
 never run), with the installed names (``package/`` is ``linkrepro``, ``legacy/`` is
 ``linkrepro.legacy``, ...).  The scene registry (``harness/scenes/__init__.py``) imports every
 thesis's subpackage, and each thesis's hook modules (bench, fuzz, commands), at run time by
-name: those edges are added here, so that a module the registry reaches which asks the
-registry back is a cycle too.
+name, and a thesis's command the module that does its work (``harness/command.py``): those
+edges are added here, so that a module the registry reaches which asks the registry back is a
+cycle too.
 
 Rules:
 - no import cycle among the project's modules;
@@ -17,6 +18,7 @@ Rules:
 from __future__ import annotations
 
 import ast
+import importlib
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -83,6 +85,9 @@ def graph() -> dict[str, set[str]]:
     for thesis in THESES:
         package = f"{REGISTRY}.{thesis}"
         edges[REGISTRY] |= {m for m in (package, *(f"{package}.{hook}" for hook in HOOKS)) if m in MODULES}
+        if f"{package}.commands" in MODULES:
+            edges[f"{package}.commands"] |= {command.work for command in
+                                             importlib.import_module(f"{package}.commands").COMMANDS}
     return edges
 
 
@@ -132,6 +137,7 @@ def test_the_graph_sees_every_module_and_the_registry():
     edges = graph()
     assert "linkrepro.harness.table_scene" in edges and "linkrepro.port.ali1977.case1" in edges
     assert f"{REGISTRY}.ali1977" in edges[REGISTRY]
+    assert f"{REGISTRY}.rahman1996.arithmetic" in edges[f"{REGISTRY}.rahman1996.commands"]
 
 
 def test_no_import_cycle():

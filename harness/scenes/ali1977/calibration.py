@@ -45,11 +45,7 @@ from ....port.ali1977.quirks import CORRECTED
 from ....port.ali1977.structure import GRAVITY_IN, GRAVITY_REAL4, Section
 from ...csv_output import FULL_PRECISION, write_csv
 from . import exact, poles
-
-TITLE = "Ali (1977): the K.E.D. engines' error bound on random geometries and sections, Cases I-III"
-#: the sample's defaults (``linkrepro ked-bound``): 1250 draws of four runs each
-SEED, DRAWS = 0, 1250
-OUTPUTS = ("calibration.csv", "summary.csv", "calibration.md")
+from .calibration_settings import DRAWS, SEED, TITLE
 
 #: the programs, their port functions and their weight's name
 PROGRAMS = {"case1_source": case1.source_case1, "case1_cognate": case1.cognate_case1,
@@ -239,3 +235,9 @@ def write(out_dir: Path, seed: int = SEED, draws: int = DRAWS, record: bool = Fa
     if record:
         write_csv(table.assign(seed=seed, draws=draws), RECORD, "%.6g")
     return text
+
+
+def run(args) -> str:
+    """``linkrepro ked-bound`` (``commands.py`` declares its arguments): the sample written into
+    ``args.out``; its markdown."""
+    return write(args.out, args.seed, args.draws, args.record)

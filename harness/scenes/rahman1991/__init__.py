@@ -1,7 +1,8 @@
 """Rahman (1991), the generalized slider crank: section 3.1's example and the claims of
-section 3.2."""
-from .example import SCENE as EXAMPLE
-from .quantities import QUANTITIES
+section 3.2.
 
-SCENES = [EXAMPLE]
+Its scenes come from ``catalog.py`` when first asked for (``harness/lazy.py``)."""
+from ...lazy import deferred
+
 __all__ = ["SCENES", "QUANTITIES"]
+__getattr__ = deferred(__name__, "catalog", __all__)

@@ -38,23 +38,24 @@ import pandas as pd
 from ... import progress
 from ...csv_output import write_csv
 from ...published_tables import PublishedTable
+from ...readings import CompilerError
 from .arithmetic_build import Measurement, ReferenceFailed, measure
 from .arithmetic_variants import VARIANTS, get
+from .arithmetic_settings import OUTPUTS, RECORD, TITLE
 
 TABLES = ("5_1", "5_2", "5_3", "5_4", "5_5", "5_6", "5_7")
 #: the series tables (crank 0-360 deg), whose cells the reading driver counts
 SERIES = TABLES[1:]
 COMMAND = "linkrepro arithmetic --out out/arithmetic"
-OUTPUTS = ("arithmetic.csv", "arithmetic_cells.csv", "arithmetic.md")
 #: the standard's reading of the constants, which the reference (D180's) was adopted against
 STANDARD = "single-constants"
-#: which arithmetics reach each published cell's printed digit, as ``--record`` last wrote it
-RECORD = Path(__file__).with_name("arithmetic_reached.csv")
 RECORD_COMMAND = "linkrepro arithmetic --out out/arithmetic --record"
 
 __all__ = ["TABLES", "SERIES", "COMMAND", "OUTPUTS", "STANDARD", "RECORD", "RECORD_COMMAND", "ReferenceFailed",
            "cell_frame", "count_frame", "meets_criterion", "record_frame", "reached", "consistent", "explaining",
-           "trail_note", "as_markdown", "write"]
+           "trail_note", "as_markdown", "write", "run", "FAILURES"]
+#: a failed run of ``linkrepro arithmetic`` (one line, status 1)
+FAILURES = (CompilerError, ReferenceFailed)
 
 
 def _published(table: str) -> PublishedTable:
@@ -392,14 +393,19 @@ def write(out_dir: Path, variants=VARIANTS, record: bool = False) -> tuple[Measu
     out_dir.mkdir(parents=True, exist_ok=True)
     write_csv(counts, out_dir / "arithmetic.csv", "%.9g")
     write_csv(cells, out_dir / "arithmetic_cells.csv", "%.17g")
-    (out_dir / "arithmetic.md").write_text("# Rahman (1996): which digits survive a change of arithmetic\n\n"
-                                           + text.split("\n", 1)[1].lstrip() + "\n")
+    (out_dir / "arithmetic.md").write_text(f"# {TITLE}\n\n" + text.split("\n", 1)[1].lstrip() + "\n")
     if record:
         if m.failures:
             raise ReferenceFailed(f"not recorded: {', '.join(m.failures)} did not run (the record holds every variant)")
         write_csv(record_frame(cells), RECORD, "%.17g")
         _record.cache_clear(), _lowered.cache_clear()
     return m, counts, cells, text
+
+
+def run(args) -> str:
+    """``linkrepro arithmetic`` (``commands.py`` declares its arguments): the study written into
+    ``args.out``; its markdown."""
+    return write(args.out, record=args.record)[3]
 
 
 if __name__ == "__main__":                 # python -m linkrepro.harness.scenes.rahman1996.arithmetic [DIR]

@@ -1,11 +1,12 @@
-"""Rahman (1996)'s own command: ``linkrepro arithmetic`` (the arithmetic study: arithmetic.py, its variants and its build)."""
+"""Rahman (1996)'s own command: ``linkrepro arithmetic`` (the arithmetic study: arithmetic.py,
+its variants and its build, which do the work and import numpy and pandas when it runs: not
+here, since the parser reads this module for ``linkrepro --help``)."""
 from __future__ import annotations
 
 from pathlib import Path
 
 from ...command import Command
-from ...readings import CompilerError
-from .arithmetic import OUTPUTS, RECORD, ReferenceFailed, write
+from .arithmetic_settings import OUTPUTS, RECORD, TITLE
 
 
 def _arguments(parser) -> None:
@@ -22,9 +23,8 @@ COMMANDS = [Command(
     out_help="output folder for arithmetic.md, arithmetic.csv, arithmetic_cells.csv "
              "(default: out/arithmetic/, which reproduce's report links)",
     outputs=OUTPUTS,
-    run=lambda args: write(args.out, record=args.record)[3],
+    work=f"{__package__}.arithmetic",
     add_arguments=_arguments,
-    failures=(CompilerError, ReferenceFailed),
-    report_title="Rahman (1996): which digits survive a change of arithmetic",
+    report_title=TITLE,
     report_markdown="arithmetic.md",
 )]
