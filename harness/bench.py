@@ -257,8 +257,8 @@ def markdown(frame: pd.DataFrame, descriptions: dict[str, str], repeat: int, ela
              f"from one run of {elapsed:.0f} s. The machine is shared: read the ratios, measured side by side, "
              "not the seconds.", "", "## Cost per position", "",
              "Microseconds per position (an input angle, a crank position). Limit: the flops per position of the "
-             "listing's algorithm, counted by hand (harness/scenes/<thesis>/bench.py: KED_*, NEWTON_*, CSSP_*, CLOSED_LOOP, "
-             f"GSC_FORCES; matrix products dense as the listings form them, {TRANSCENDENTAL} flops for a sin, "
+             "listing's algorithm, counted by hand (`harness/scenes/<thesis>/bench.py`: `KED_*`, `NEWTON_*`, `CSSP_*`, "
+             f"`CLOSED_LOOP`, `GSC_FORCES`; matrix products dense as the listings form them, {TRANSCENDENTAL} flops for a sin, "
              f"cos, atan or sqrt), at {FLOP_RATE / 1e9:g} GFLOP/s (one core's scalar peak: 4 flops a cycle at "
              "2.5 GHz, no SIMD). Last column: the port with the listing's bugs against legacy on the same inputs, "
              "max |difference| / max |legacy|.", ""]

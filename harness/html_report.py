@@ -17,20 +17,20 @@ from __future__ import annotations
 import base64
 import json
 import math
+import re
 from functools import lru_cache
 from pathlib import Path, PurePosixPath
 from typing import TYPE_CHECKING
 
 import jinja2
 import pandas as pd
-from markdown_it import MarkdownIt
 from PIL import Image
 
-from . import figures as figures_mod, listing_lines, manifest, register as register_mod
+from . import figures as figures_mod, listing_lines, manifest, markdown_text, register as register_mod
 from .diff import CLASSES, COUNT_COLUMNS, EXPLAINED_BY, classify_cells, headline
 from .engines import ENGINES
 from .register import Deviation
-from .report import ASSUMPTIONS_WORDS, heading
+from .report import heading
 from .scenes import SCENES, TABLES
 from .trail import digits_reproduced, printed_digits, published_source, read_diff
 
@@ -55,22 +55,13 @@ def data_uri(path: Path) -> str:
     return f"data:{kind};base64," + base64.b64encode(path.read_bytes()).decode("ascii")
 
 
-def markdown_html(text: str, base: PurePosixPath = PurePosixPath("."), breaks: bool = False) -> str:
-    """Markdown as HTML (CommonMark and tables; raw HTML escaped; ``breaks``: a line break is
-    kept, as in a scene's overview lines).  Images are left out (a section shows its figures
-    with their captions); a relative link is made relative to the report's folder (``base``:
-    the markdown's folder there)."""
-    md = MarkdownIt("commonmark", {"html": False, "breaks": breaks}).enable("table")
-    md.renderer.rules["image"] = lambda tokens, idx, options, env: ""
+#: our markdown as HTML: the one way every string that reaches the page is rendered
+markdown_html = markdown_text.html
 
-    def link_open(tokens, idx, options, env):
-        href = tokens[idx].attrGet("href") or ""
-        if href and not href.startswith(("#", "/")) and ":" not in href.split("/")[0]:
-            tokens[idx].attrSet("href", (base / href).as_posix())
-        return md.renderer.renderToken(tokens, idx, options, env)
 
-    md.renderer.rules["link_open"] = link_open
-    return md.render(text)
+def inline(text: str) -> str:
+    """One line of our markdown (a skipped scene's reason, a failure, a note) as inline HTML."""
+    return markdown_text.html(text, inline=True)
 
 
 def _line(line: listing_lines.ListingLine) -> dict:
@@ -78,10 +69,14 @@ def _line(line: listing_lines.ListingLine) -> dict:
 
 
 def _entry(entry: Deviation) -> dict:
+    """A register entry for the page: its words rendered as report.md's ``report.render_entry`` writes them."""
     edits = listing_lines.tagged(entry.id)
-    return {"id": entry.id, "kind": entry.kind, "certainty": entry.certainty, "title": entry.title,
-            "fields": entry.how_known() + [(name, getattr(entry, name))
-                                           for name in ("where", "printed", "meant", "evidence", "effect")],
+    words = [(name, markdown_text.prose(text)) for name, text in entry.how_known()]
+    words += [(name, markdown_text.prose(getattr(entry, name))) for name in ("where",)]
+    words += [(name, markdown_text.code_span(getattr(entry, name))) for name in ("printed", "meant")]
+    words += [(name, markdown_text.prose(getattr(entry, name))) for name in ("evidence", "effect")]
+    return {"id": entry.id, "kind": entry.kind, "certainty": entry.certainty, "title": inline(markdown_text.prose(entry.title)),
+            "fields": [(name, inline(text)) for name, text in words],
             "quirk": entry.quirk, "cited": [_line(c) for c in listing_lines.cited(entry)],
             "edits": [_line(e) for e in edits[:EDITS_SHOWN]], "more_edits": max(0, len(edits) - EDITS_SHOWN)}
 
@@ -162,21 +157,74 @@ def figures(folder: Path) -> list[dict]:
     return shown
 
 
+#: a part of a report.md up to this many characters is shown open; a longer one is folded (its heading
+#: the summary a reader opens it by)
+OPEN_CHARS = 600
+#: the files of a section's folder the page links, in this order (outcome.json is the run's record)
+LINKED = ("*.md", "*.csv", "*.png", "*.svg")
+#: a report.md's part naming register entries (``report.scene_report``): the page shows each entry once
+REGISTER_PART = "Register entries involved"
+ENTRY_HEAD = re.compile(r"^#### (D\d+) ", re.M)
+
+
+def files(folder: Path, out_dir: Path) -> list[dict]:
+    """The files of a section's ``folder`` a reader opens (``LINKED``), each with its link from the page."""
+    found = [p for pattern in LINKED for p in sorted(folder.glob(pattern))] if folder.is_dir() else []
+    return [{"name": p.name, "href": p.relative_to(out_dir).as_posix()} for p in found]
+
+
+def report_parts(text: str) -> tuple[str, list[tuple[str, str]]]:
+    """A report.md as (what precedes its first ``## `` heading, [(each such heading, its part)]), its
+    ``# `` title left out (the section has its heading)."""
+    lines = text.splitlines()
+    if lines and lines[0].startswith("# "):
+        lines = lines[1:]
+    intro, parts = [], []
+    for line in lines:
+        if line.startswith("## "):
+            parts.append((line[3:].strip(), []))
+        else:
+            (parts[-1][1] if parts else intro).append(line)
+    return "\n".join(intro).strip(), [(head, "\n".join(body).strip()) for head, body in parts]
+
+
+def report_view(path: Path, out_dir: Path) -> dict:
+    """A section's report.md for the page, whole: its opening shown, each ``## `` part under its heading
+    (folded beyond ``OPEN_CHARS``); a part of images only left out (the section shows its figures with
+    their captions); the register entries a part names linked to the page's register section, where
+    each entry is shown once.  ``ids``: those entries."""
+    base = PurePosixPath(path.parent.relative_to(out_dir).as_posix())
+    intro, parts = report_parts(path.read_text())
+    shown, ids = [], []
+    for head, body in parts:
+        if head == REGISTER_PART:
+            ids += ENTRY_HEAD.findall(body)
+            body = "\n".join(f"- [{i}](#entry-{i})" for i in ENTRY_HEAD.findall(body))
+        html = markdown_html(body, base)
+        if re.sub(r"<[^>]*>", "", html).strip():
+            shown.append({"head": inline(head), "html": html, "open": len(body) <= OPEN_CHARS})
+    return {"intro": markdown_html(intro, base), "parts": shown, "ids": ids}
+
+
 def _scene_view(folder: "Folder", section: "SceneSection", register, blocks, cells, labels) -> dict:
-    view = {"kind": "scene", "name": section.name, "title": section.title, "problem": section.problem,
-            "outcome": section.outcome, "figures": [], "table": None, "overview": "", "counts": [], "assumptions": []}
+    here = folder.out_dir / section.name
+    view = {"kind": "scene", "name": section.name, "title": section.title, "problem": inline(section.problem),
+            "outcome": section.outcome, "figures": [], "table": None, "overview": "", "counts": [], "report": None,
+            "files": files(here, folder.out_dir), "skipped": "", "failures": []}
     if section.outcome is None:
         return view
-    view["assumptions"] = [{"id": e.id, "title": e.title, "effect": e.effect}
-                           for e in register_mod.assumed_by(section.name, register)]
-    here = folder.out_dir / section.name
+    view["skipped"] = inline(section.outcome.skipped)
+    view["failures"] = [inline(f) for f in section.outcome.failures]
     view["figures"] = figures(here) if here.is_dir() else []
+    if (here / "report.md").is_file():
+        view["report"] = report_view(here / "report.md", folder.out_dir)
+        view["used"] = set(view["report"]["ids"])
     if section.name in TABLES and (here / "diff.csv").is_file():
         diff = read_diff(TABLES[section.name], folder.out_dir)
         view["table"] = table_view(SCENES[section.name], diff, register, blocks, cells, labels)
         if section.outcome.counts is not None:
             view["counts"] = overview(section.outcome.counts)
-        view["used"] = {i for ids in diff["register_ids"].fillna("") for i in str(ids).split()}
+        view["used"] = view.get("used", set()) | {i for ids in diff["register_ids"].fillna("") for i in str(ids).split()}
     else:
         view["overview"] = markdown_html("\n".join(section.outcome.overview), breaks=True)
     return view
@@ -184,7 +232,7 @@ def _scene_view(folder: "Folder", section: "SceneSection", register, blocks, cel
 
 def _output_view(folder: "Folder", section: "OutputSection") -> dict:
     view = {"kind": "output", "name": section.name, "title": section.title, "present": section.present,
-            "command": section.command, "html": "", "figures": []}
+            "command": section.command, "html": "", "figures": [], "files": files(section.folder, folder.out_dir)}
     if section.present:
         try:
             text = section.markdown.read_text()
@@ -192,7 +240,7 @@ def _output_view(folder: "Folder", section: "OutputSection") -> dict:
         except (OSError, ValueError) as exc:        # damaged: not UTF-8, a figure that is no image
             view["html"] = markdown_html(f"**{section.markdown.relative_to(folder.out_dir).as_posix()} or a figure "
                                          f"beside it cannot be read ({type(exc).__name__}); "
-                                         f"{manifest.code_span(section.command)} writes it again.**")
+                                         f"{markdown_text.code_span(section.command)} writes it again.**")
             return view
         body = text.split("\n", 1)[1] if text.startswith("# ") else text      # the section has its heading
         view["html"] = markdown_html(body, PurePosixPath(section.folder.relative_to(folder.out_dir).as_posix()))
@@ -224,13 +272,13 @@ def render(folder: "Folder", latest: str = "") -> str:
     totals = folder.cell_totals()
     kinds = [k for k in EXPLAINED_BY if totals.get(k, 0)]      # the overview's kinds: those that explain a cell
     return template().render(
-        sections=sections, absent=folder.absent, absent_command=folder.absent_command, latest=latest,
-        notes=folder.notes, engines=ENGINES,
+        sections=sections, absent=folder.absent, absent_command=folder.absent_command, latest=inline(latest),
+        notes=[inline(note) for note in folder.notes], engines=ENGINES,
         statuses=CELL_STATUSES, columns=[(c, heading(c)) for c in COUNT_COLUMNS if c not in EXPLAINED_BY or c in kinds],
-        kinds=kinds, total=headline(totals, by_kind=True), assumptions_words=ASSUMPTIONS_WORDS,
+        kinds=kinds, total=headline(totals, by_kind=True), manifest=manifest.FILE,
         made=(manifest.TITLE, markdown_html("\n".join(manifest.summary(folder.out_dir)))),
         entries=[_entry(register[i]) for i in sorted(used) if i in register],
-        blocks={block: {"notes": notes, "lines": [_line(line) for line in lines]}
+        blocks={block: {"notes": [inline(note) for note in notes], "lines": [_line(line) for line in lines]}
                 for (lines, notes), block in blocks.items()},
         cells_json=json.dumps(cells, separators=(",", ":")).replace("</", "<\\/"),
         labels_json=json.dumps(list(labels), separators=(",", ":")).replace("</", "<\\/"))

@@ -13,6 +13,7 @@ from matplotlib.figure import Figure
 
 from .diff import EXPLAINED_BY, classify_cells, column_max, count_cells
 from .figures import ENGINE_STYLE, MAX_WIDTH_IN, RC, new_figure, save
+from .markdown_text import code_span, prose
 from .register import Deviation, assumed_by
 
 
@@ -234,16 +235,17 @@ def assumptions_markdown(scene: str, register: dict[str, Deviation]) -> list[str
     if not found:
         return []
     return (["## What the corrected engine still assumes", "", ASSUMPTIONS_WORDS, ""]
-            + [f"- **{entry.id}** {entry.title}. {entry.effect}" for entry in found] + [""])
+            + [f"- **{entry.id}** {prose(entry.title)}. {prose(entry.effect)}" for entry in found] + [""])
 
 
 def render_entry(entry: Deviation) -> str:
-    lines = [f"#### {entry.id} ({entry.kind}{', ' + entry.certainty if entry.certainty else ''}): {entry.title}",
-             *(f"- {name}: {text}" for name, text in entry.how_known()),
-             f"- where: {entry.where}", f"- printed: `{entry.printed}`", f"- meant: `{entry.meant}`",
-             f"- evidence: {entry.evidence}", f"- effect: {entry.effect}"]
+    """A register entry in markdown: its words as written (``prose``), printed, meant and quirk as code."""
+    lines = [f"#### {entry.id} ({entry.kind}{', ' + entry.certainty if entry.certainty else ''}): {prose(entry.title)}",
+             *(f"- {name}: {prose(text)}" for name, text in entry.how_known()),
+             f"- where: {prose(entry.where)}", f"- printed: {code_span(entry.printed)}",
+             f"- meant: {code_span(entry.meant)}", f"- evidence: {prose(entry.evidence)}", f"- effect: {prose(entry.effect)}"]
     if entry.quirk:
-        lines.append(f"- port quirk: `{entry.quirk}`")
+        lines.append(f"- port quirk: {code_span(entry.quirk)}")
     return "\n".join(lines)
 
 
