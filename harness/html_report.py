@@ -199,7 +199,8 @@ def report_view(path: Path, out_dir: Path) -> dict:
     for head, body in parts:
         if head == REGISTER_PART:
             ids += ENTRY_HEAD.findall(body)
-            body = "\n".join(f"- [{i}](#entry-{i})" for i in ENTRY_HEAD.findall(body))
+            body = (", ".join(f"[{i}](#entry-{i})" for i in ENTRY_HEAD.findall(body))
+                    + ": each shown once, under [Register entries](#register).")
         html = markdown_html(body, base)
         if re.sub(r"<[^>]*>", "", html).strip():
             shown.append({"head": inline(head), "html": html, "open": len(body) <= OPEN_CHARS})
