@@ -12,8 +12,8 @@ from pathlib import PurePosixPath
 #: a code span: a run of backticks, its text, the same run again (CommonMark)
 SPAN = re.compile(r"(?<!`)(`+)(?!`)(.+?)(?<!`)\1(?!`)", re.S)
 #: what markdown would read as markup in running text (emphasis, links, raw HTML, table cells, a lone
-#: backtick); ``_`` only where it can open or close emphasis (not between two letters or digits)
-MARKUP = re.compile(r"[\\*\[\]<>|`]|(?<![A-Za-z0-9])_|_(?![A-Za-z0-9])")
+#: backtick, an entity); ``_`` only where it can open or close emphasis (not between two letters or digits)
+MARKUP = re.compile(r"[\\*\[\]<>|`]|&(?=#?\w+;)|(?<![A-Za-z0-9])_|_(?![A-Za-z0-9])")
 
 
 def code_span(text: str) -> str:
