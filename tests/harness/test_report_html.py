@@ -402,7 +402,8 @@ def test_the_panel_fits_and_leaves_the_cell_in_view(page):
         box, side = rect(page, cell), rect(page, panel)
         header = rect(page, page.find_element(By.TAG_NAME, "header"))
         assert box["left"] >= 0 and box["right"] <= side["left"], (column, box, side)
-        assert box["top"] >= header["bottom"] and box["bottom"] <= page.execute_script("return innerHeight")
+        # within a pixel: the page scrolls by whole pixels, the cell may sit at a fraction of one (its text's line height)
+        assert box["top"] >= header["bottom"] - 1 and box["bottom"] <= page.execute_script("return innerHeight") + 1
         if column == COLUMN:
             shot(page, "panel")
 
