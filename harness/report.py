@@ -18,13 +18,15 @@ from .register import Deviation, assumed_by
 
 
 def markdown_table(frame: pd.DataFrame, floatfmt: str = "{:.3g}") -> str:
-    cols = [str(c) for c in frame.columns]
-    head = "| " + " | ".join([frame.index.name or ""] + cols) + " |"
+    """``frame`` as a markdown table, its index first; floats as ``floatfmt``, any other cell's text as
+    written (``prose``: a ``|Delta|`` or ``REAL*4`` in a cell is not markup)."""
+    cols = [prose(str(c)) for c in frame.columns]
+    head = "| " + " | ".join([prose(frame.index.name or "")] + cols) + " |"
     rule = "|" + "---|" * (len(cols) + 1)
     lines = [head, rule]
     for idx, row in frame.iterrows():
-        cells = [floatfmt.format(v) if isinstance(v, float) else str(v) for v in row]
-        lines.append("| " + " | ".join([str(idx)] + cells) + " |")
+        cells = [floatfmt.format(v) if isinstance(v, float) else prose(str(v)) for v in row]
+        lines.append("| " + " | ".join([prose(str(idx))] + cells) + " |")
     return "\n".join(lines)
 
 

@@ -324,7 +324,7 @@ def overview(result: dict) -> list[str]:
     """The run report's table: each claim's verdicts per engine."""
     verdicts = result["claims"].groupby(["engine", "verdict"]).size().unstack(fill_value=0)
     return (["No numeric table is printed; each claim of section 3.2, per engine "
-             "(see the scene report and register D085-D094):", "",
+             f"(see [the scene report]({NAME}/report.md) and register D085-D094):", "",
              "| engine | " + " | ".join(verdicts.columns) + " |", "|---|" + "---|" * len(verdicts.columns)]
             + [f"| {engine} | " + " | ".join(str(v) for v in row) + " |" for engine, row in verdicts.iterrows()])
 
