@@ -69,14 +69,13 @@ def _line(line: listing_lines.ListingLine) -> dict:
 
 
 def _entry(entry: Deviation) -> dict:
-    """A register entry for the page: its words rendered as report.md's ``report.render_entry`` writes them."""
+    """A register entry for the page: its words rendered as report.md's ``report.render_entry`` writes
+    them (printed and meant as code, the rest as written)."""
     edits = listing_lines.tagged(entry.id)
-    words = [(name, markdown_text.prose(text)) for name, text in entry.how_known()]
-    words += [(name, markdown_text.prose(getattr(entry, name))) for name in ("where",)]
-    words += [(name, markdown_text.code_span(getattr(entry, name))) for name in ("printed", "meant")]
-    words += [(name, markdown_text.prose(getattr(entry, name))) for name in ("evidence", "effect")]
+    words = entry.how_known() + [(name, getattr(entry, name)) for name in ("where", "printed", "meant", "evidence", "effect")]
     return {"id": entry.id, "kind": entry.kind, "certainty": entry.certainty, "title": inline(markdown_text.prose(entry.title)),
-            "fields": [(name, inline(text)) for name, text in words],
+            "fields": [(name, inline(markdown_text.code_span(text) if name in ("printed", "meant") else markdown_text.prose(text)))
+                       for name, text in words],
             "quirk": entry.quirk, "cited": [_line(c) for c in listing_lines.cited(entry)],
             "edits": [_line(e) for e in edits[:EDITS_SHOWN]], "more_edits": max(0, len(edits) - EDITS_SHOWN)}
 
@@ -209,13 +208,13 @@ def report_view(path: Path, out_dir: Path) -> dict:
 
 def _scene_view(folder: "Folder", section: "SceneSection", register, blocks, cells, labels) -> dict:
     here = folder.out_dir / section.name
-    view = {"kind": "scene", "name": section.name, "title": section.title, "problem": inline(section.problem),
+    view = {"kind": "scene", "name": section.name, "title": section.title, "problem": inline(markdown_text.prose(section.problem)),
             "outcome": section.outcome, "figures": [], "table": None, "overview": "", "counts": [], "report": None,
             "files": files(here, folder.out_dir), "skipped": "", "failures": []}
     if section.outcome is None:
         return view
     view["skipped"] = inline(section.outcome.skipped)
-    view["failures"] = [inline(f) for f in section.outcome.failures]
+    view["failures"] = [inline(markdown_text.prose(f)) for f in section.outcome.failures]
     view["figures"] = figures(here) if here.is_dir() else []
     if (here / "report.md").is_file():
         view["report"] = report_view(here / "report.md", folder.out_dir)

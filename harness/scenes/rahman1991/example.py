@@ -314,9 +314,8 @@ def report(frames, claims, study, singular, legacy, plots, timings) -> str:
              "## Timings (this run)", ""]
     lines += [f"- {k}: {v:.2f} s" for k, v in timings.items()]
     lines += ["", "## Figures", ""] + [f"![{p.stem}]({p.name})" for p in plots]
-    for engine, frame in frames.items():
-        counts = frame["status"].value_counts().to_dict()
-        lines.insert(4, f"- {engine}: positions by status {counts}")
+    lines[4:4] = [f"- {engine}: positions by status {frame['status'].value_counts().to_dict()}"
+                  for engine, frame in reversed(frames.items())] + [""]     # a list, then the paragraph after it
     return "\n".join(lines) + "\n"
 
 
