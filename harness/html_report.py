@@ -8,9 +8,13 @@ unit, each cell coloured by what it counts as for the engine chosen in the page'
 not-produced) with how
 many of its printed digits that engine reproduces; a click (or Enter) on a cell opens its
 trail (``harness/trail.py``): every engine's value, the register entries, the listing lines.
-Per other scene and per command's output: its markdown rendered (markdown-it, CommonMark with
-tables).  Every section's figures with their captions (``figures.caption_of``), and an
-overview of every table and engine (``diff.count_cells``, the counts every report shows).
+Per scene: its overview lines (other than a table's), its own report.md whole (``report_view``:
+its opening shown, each part folded under its heading, the register entries it names shown once in
+the page's register section, which a cell's trail reads too) and links to its folder's files; per
+command's output: its markdown.  Every string is rendered by one renderer (``markdown_text.html``,
+CommonMark with tables).  Every section's figures with their captions (``figures.caption_of``),
+and an overview of every table and engine (``diff.count_cells``, the counts every report shows)
+that links each section and the folder's manifest.json.
 """
 from __future__ import annotations
 

@@ -1,8 +1,10 @@
 """The HTML report and `linkrepro explain`: Table I, Table 5.1 and the conditioning study run into a
 temporary folder (readings skipped), then Table 5.1 rerun alone, and a quick bench into its
-bench/; the page is checked as a file (self-contained) and in headless Chromium (Debian's
+bench/, and Rahman (1996)'s multibody scene saved as skipped (Exudyn missing); the page is checked
+as a file (self-contained; every string as written) and in headless Chromium (Debian's
 ``chromium`` and ``chromium-driver``, driven by Selenium: nothing is downloaded): every section
-rendered, headings clear of the header, the cell's panel, units, a keyboard walk, contrast.
+rendered and holding its report.md whole, headings clear of the header, the cell's panel, units,
+a keyboard walk, contrast.
 Screenshots of the main views are kept in ``test-artifacts/report/`` (look at them).
 
 The expectations come from outside the run: the register (harness/deviations.toml) says which
