@@ -160,9 +160,10 @@ def figures(folder: Path) -> list[dict]:
     return shown
 
 
-#: a part of a report.md up to this many characters is shown open; a longer one is folded (its heading
-#: the summary a reader opens it by)
-OPEN_CHARS = 600
+#: a part of a report.md whose text (what a reader reads, markup aside) is up to this many characters
+#: is shown open ("None.", a line of links); a longer one is folded, its heading the summary a reader
+#: opens it by (a full run's page: 64,900 px tall so, 71,600 px with 900 characters open)
+OPEN_CHARS = 300
 #: the files of a section's folder the page links, in this order (outcome.json is the run's record)
 LINKED = ("*.md", "*.csv", "*.png", "*.svg")
 #: a report.md's part naming register entries (``report.scene_report``): the page shows each entry once
@@ -193,7 +194,7 @@ def report_parts(text: str) -> tuple[str, list[tuple[str, str]]]:
 
 def report_view(path: Path, out_dir: Path) -> dict:
     """A section's report.md for the page, whole: its opening shown, each ``## `` part under its heading
-    (folded beyond ``OPEN_CHARS``); a part of images only left out (the section shows its figures with
+    (folded beyond ``OPEN_CHARS`` of text); a part of images only left out (the section shows its figures with
     their captions); the register entries a part names linked to the page's register section, where
     each entry is shown once.  ``ids``: those entries."""
     base = PurePosixPath(path.parent.relative_to(out_dir).as_posix())
@@ -205,8 +206,9 @@ def report_view(path: Path, out_dir: Path) -> dict:
             body = (", ".join(f"[{i}](#entry-{i})" for i in ENTRY_HEAD.findall(body))
                     + ": each shown once, under [Register entries](#register).")
         html = markdown_html(body, base)
-        if re.sub(r"<[^>]*>", "", html).strip():
-            shown.append({"head": inline(head), "html": html, "open": len(body) <= OPEN_CHARS})
+        words = " ".join(re.sub(r"<[^>]*>", " ", html).split())
+        if words:
+            shown.append({"head": inline(head), "html": html, "open": len(words) <= OPEN_CHARS})
     return {"intro": markdown_html(intro, base), "parts": shown, "ids": ids}
 
 
