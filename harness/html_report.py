@@ -162,7 +162,7 @@ def figures(folder: Path) -> list[dict]:
 
 #: a part of a report.md whose text (what a reader reads, markup aside) is up to this many characters
 #: is shown open ("None.", a line of links); a longer one is folded, its heading the summary a reader
-#: opens it by (a full run's page: 64,900 px tall so, 71,600 px with 900 characters open)
+#: opens it by (the page stays short enough to scroll through)
 OPEN_CHARS = 300
 #: the files of a section's folder the page links, in this order (outcome.json is the run's record)
 LINKED = ("*.md", "*.csv", "*.png", "*.svg")
