@@ -223,7 +223,11 @@ def _scene_view(folder: "Folder", section: "SceneSection", register, blocks, cel
     view["failures"] = [inline(markdown_text.prose(f)) for f in section.outcome.failures]
     view["figures"] = figures(here) if here.is_dir() else []
     if (here / "report.md").is_file():
-        view["report"] = report_view(here / "report.md", folder.out_dir)
+        try:
+            view["report"] = report_view(here / "report.md", folder.out_dir)
+        except (OSError, ValueError) as exc:          # damaged (not UTF-8) where its run kept no record of it
+            view["report"] = {"intro": markdown_html(f"**{section.name}/report.md cannot be read "
+                                                     f"({type(exc).__name__}); run the scene again.**"), "parts": [], "ids": []}
         view["used"] = set(view["report"]["ids"])
     if section.name in TABLES and (here / "diff.csv").is_file():
         diff = read_diff(TABLES[section.name], folder.out_dir)
