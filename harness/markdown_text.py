@@ -7,6 +7,7 @@ characters markdown would read as markup escaped, keeping the code spans it hold
 from __future__ import annotations
 
 import re
+from functools import lru_cache
 from pathlib import PurePosixPath
 
 #: a code span: a run of backticks, its text, the same run again (CommonMark)
@@ -38,6 +39,13 @@ def html(text: str, base: PurePosixPath = PurePosixPath("."), breaks: bool = Fal
     as in a scene's overview lines; ``inline``: one paragraph's content, no ``<p>``).  Images are
     left out (a section shows its figures with their captions); a relative link is made relative
     to the report's folder (``base``: the markdown's folder there)."""
+    md, env = _renderer(breaks), {"base": base}
+    return md.renderInline(text, env) if inline else TABLE_BREAK.sub(r"\1", md.render(text, env))
+
+
+@lru_cache(maxsize=None)
+def _renderer(breaks: bool):
+    """The markdown-it renderer ``html`` uses, made once a process (``breaks``: keep line breaks)."""
     from markdown_it import MarkdownIt
     md = MarkdownIt("commonmark", {"html": False, "breaks": breaks}).enable("table")
     md.renderer.rules["image"] = lambda tokens, idx, options, env: ""
@@ -45,11 +53,11 @@ def html(text: str, base: PurePosixPath = PurePosixPath("."), breaks: bool = Fal
     def link_open(tokens, idx, options, env):
         href = tokens[idx].attrGet("href") or ""
         if href and not href.startswith(("#", "/")) and ":" not in href.split("/")[0]:
-            tokens[idx].attrSet("href", (base / href).as_posix())
+            tokens[idx].attrSet("href", (env["base"] / href).as_posix())
         return md.renderer.renderToken(tokens, idx, options, env)
 
     md.renderer.rules["link_open"] = link_open
-    return md.renderInline(text) if inline else TABLE_BREAK.sub(r"\1", md.render(text))
+    return md
 
 
 #: the line break markdown-it puts after each tag of a table: nothing to a reader, 3-5 % of a page of tables
