@@ -76,9 +76,12 @@ def _entry(entry: Deviation) -> dict:
     """A register entry for the page: its words rendered as report.md's ``report.render_entry`` writes
     them (printed and meant as code, the rest as written)."""
     edits = listing_lines.tagged(entry.id)
-    words = entry.how_known() + [(name, getattr(entry, name)) for name in ("where", "printed", "meant", "evidence", "effect")]
-    return {"id": entry.id, "kind": entry.kind, "certainty": entry.certainty, "title": inline(markdown_text.prose(entry.title)),
-            "fields": [(name, inline(markdown_text.code_span(text) if name in ("printed", "meant") else markdown_text.prose(text)))
+    words = entry.how_known() + [(name, getattr(entry, name))
+                                 for name in ("where", "printed", "meant", "evidence", "effect")]
+    code = markdown_text.code_span
+    return {"id": entry.id, "kind": entry.kind, "certainty": entry.certainty,
+            "title": inline(markdown_text.prose(entry.title)),
+            "fields": [(name, inline(code(text) if name in ("printed", "meant") else markdown_text.prose(text)))
                        for name, text in words],
             "quirk": entry.quirk, "cited": [_line(c) for c in listing_lines.cited(entry)],
             "edits": [_line(e) for e in edits[:EDITS_SHOWN]], "more_edits": max(0, len(edits) - EDITS_SHOWN)}
@@ -202,9 +205,9 @@ def report_view(path: Path, out_dir: Path) -> dict:
     shown, ids = [], []
     for head, body in parts:
         if head == REGISTER_PART:
-            ids += ENTRY_HEAD.findall(body)
-            body = (", ".join(f"[{i}](#entry-{i})" for i in ENTRY_HEAD.findall(body))
-                    + ": each shown once, under [Register entries](#register).")
+            named = ENTRY_HEAD.findall(body)
+            ids += named
+            body = ", ".join(f"[{i}](#entry-{i})" for i in named) + ": each shown once, under [Register entries](#register)."
         html = markdown_html(body, base)
         words = " ".join(re.sub(r"<[^>]*>", " ", html).split())
         if words:
@@ -214,8 +217,8 @@ def report_view(path: Path, out_dir: Path) -> dict:
 
 def _scene_view(folder: "Folder", section: "SceneSection", register, blocks, cells, labels) -> dict:
     here = folder.out_dir / section.name
-    view = {"kind": "scene", "name": section.name, "title": section.title, "problem": inline(markdown_text.prose(section.problem)),
-            "outcome": section.outcome, "figures": [], "table": None, "overview": "", "counts": [], "report": None,
+    view = {"kind": "scene", "name": section.name, "title": section.title,
+            "problem": inline(markdown_text.prose(section.problem)), "outcome": section.outcome, "figures": [], "table": None, "overview": "", "counts": [], "report": None,
             "files": files(here, folder.out_dir), "skipped": "", "failures": []}
     if section.outcome is None:
         return view
@@ -226,8 +229,8 @@ def _scene_view(folder: "Folder", section: "SceneSection", register, blocks, cel
         try:
             view["report"] = report_view(here / "report.md", folder.out_dir)
         except (OSError, ValueError) as exc:          # damaged (not UTF-8) where its run kept no record of it
-            view["report"] = {"intro": markdown_html(f"**{section.name}/report.md cannot be read "
-                                                     f"({type(exc).__name__}); run the scene again.**"), "parts": [], "ids": []}
+            said = f"**{section.name}/report.md cannot be read ({type(exc).__name__}); run the scene again.**"
+            view["report"] = {"intro": markdown_html(said), "parts": [], "ids": []}
         view["used"] = set(view["report"]["ids"])
     if section.name in TABLES and (here / "diff.csv").is_file():
         diff = read_diff(TABLES[section.name], folder.out_dir)
@@ -285,7 +288,8 @@ def render(folder: "Folder", latest: str = "") -> str:
         sections=sections, absent=folder.absent, absent_command=folder.absent_command, latest=inline(latest),
         notes=[inline(note) for note in folder.notes], engines=ENGINES,
         statuses=CELL_STATUSES, columns=[(c, heading(c)) for c in COUNT_COLUMNS if c not in EXPLAINED_BY or c in kinds],
-        kinds=kinds, total=headline(totals, by_kind=True), manifest=manifest.FILE,
+        kinds=kinds, total=headline(totals, by_kind=True),
+        manifest=manifest.FILE if (folder.out_dir / manifest.FILE).is_file() else "",
         made=(manifest.TITLE, markdown_html("\n".join(manifest.summary(folder.out_dir)))),
         entries=[_entry(register[i]) for i in sorted(used) if i in register],
         blocks={block: {"notes": [inline(note) for note in notes], "lines": [_line(line) for line in lines]}
