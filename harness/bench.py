@@ -35,6 +35,7 @@ import numpy as np
 import pandas as pd
 
 from . import progress
+from .markdown_text import prose
 
 #: the port's package (linkrepro.port), whose caches are cleared before each timed call
 PORT = __name__.split(".")[0] + ".port"
@@ -227,23 +228,27 @@ def cost_table(rows: pd.DataFrame) -> list[str]:
         us = dict(zip(g.engine, g.us_per_position))
         legacy_us, printed, corrected, limit = (us.get(e, np.nan) for e in (*ENGINES, "limit"))
         agree = g.error[g.engine == "port_printed"].dropna()
-        lines.append(f"| {name} | {g.positions.iloc[-1]} | {_us(legacy_us)} | {_us(printed)} | {_us(corrected)} | "
+        lines.append(f"| {prose(name)} | {g.positions.iloc[-1]} | {_us(legacy_us)} | {_us(printed)} | {_us(corrected)} | "
                      f"{_us(limit)} ({g.flops_per_position.iloc[0]:.3g}) | {_ratio(printed, legacy_us)} | "
                      f"{_ratio(corrected, legacy_us)} | {_ratio(legacy_us, limit)} | {_ratio(corrected, limit)} | "
                      f"{f'{agree.iloc[0]:.1e}' if len(agree) else ''} |")
-        notes += [f"- {name}: {g.note.iloc[0]}."] if isinstance(g.note.iloc[0], str) and g.note.iloc[0] else []
+        notes += [f"- {prose(name)}: {prose(g.note.iloc[0])}."] if isinstance(g.note.iloc[0], str) and g.note.iloc[0] else []
     return lines + [""] + notes
+
+
+#: a setting on the Pareto front, as knob_tables marks it (an asterisk, escaped: not emphasis)
+FRONT = "\\* "
 
 
 def knob_tables(rows: pd.DataFrame, descriptions: dict[str, str]) -> list[str]:
     """Part 2 as markdown: one table per knob."""
     lines = []
     for name, g in rows.groupby("subject", sort=False):
-        lines += [f"### {name}", "", f"{descriptions[name]}. Error unit: {g.error_unit.iloc[0]}; "
-                  "* on the Pareto front, = the reference.", "", "| setting | seconds | error | |", "|---|---|---|---|"]
+        lines += [f"### {prose(name)}", "", f"{prose(descriptions[name])}. Error unit: {prose(str(g.error_unit.iloc[0]))}; "
+                  "\\* on the Pareto front, = the reference.", "", "| setting | seconds | error | |", "|---|---|---|---|"]
         for r in g.itertuples():
-            error = f"{r.error:.2e}" if np.isfinite(r.error) else r.note
-            lines.append(f"| {r.setting} | {r.seconds:.3g} | {error} | {'* ' if r.pareto else ''}"
+            error = f"{r.error:.2e}" if np.isfinite(r.error) else prose(str(r.note))
+            lines.append(f"| {prose(str(r.setting))} | {r.seconds:.3g} | {error} | {FRONT if r.pareto else ''}"
                          f"{'=' if r.reference is True else ''} |")
         lines.append("")
     return lines
@@ -257,8 +262,8 @@ def markdown(frame: pd.DataFrame, descriptions: dict[str, str], repeat: int, ela
              f"from one run of {elapsed:.0f} s. The machine is shared: read the ratios, measured side by side, "
              "not the seconds.", "", "## Cost per position", "",
              "Microseconds per position (an input angle, a crank position). Limit: the flops per position of the "
-             "listing's algorithm, counted by hand (harness/scenes/<thesis>/bench.py: KED_*, NEWTON_*, CSSP_*, CLOSED_LOOP, "
-             f"GSC_FORCES; matrix products dense as the listings form them, {TRANSCENDENTAL} flops for a sin, "
+             "listing's algorithm, counted by hand (`harness/scenes/<thesis>/bench.py`: `KED_*`, `NEWTON_*`, `CSSP_*`, "
+             f"`CLOSED_LOOP`, `GSC_FORCES`; matrix products dense as the listings form them, {TRANSCENDENTAL} flops for a sin, "
              f"cos, atan or sqrt), at {FLOP_RATE / 1e9:g} GFLOP/s (one core's scalar peak: 4 flops a cycle at "
              "2.5 GHz, no SIMD). Last column: the port with the listing's bugs against legacy on the same inputs, "
              "max |difference| / max |legacy|.", ""]

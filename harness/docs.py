@@ -35,6 +35,7 @@ import pandas as pd
 
 from . import register as register_mod
 from .diff import CLASSES, EXPLAINED_BY, count_cells, words
+from .markdown_text import prose
 
 BLOCK = re.compile(r"(<!-- generated: (?P<name>[^>]+?) -->\n)(?P<body>.*?)(<!-- end generated -->)", re.S)
 PAGES = ("README.md", "docs/*.md")
@@ -99,7 +100,7 @@ def model_assumptions(names: list[str]) -> str:
     for _, entry in sorted(register_mod.load().items()):
         scenes = [f"`{scene}`" for scene in entry.scenes if named(scene)]
         if scenes:
-            lines.append(f"- **{entry.id}** {entry.title} ({', '.join(scenes)}). {entry.effect}")
+            lines.append(f"- **{entry.id}** {prose(entry.title)} ({', '.join(scenes)}). {prose(entry.effect)}")
     if not lines:
         raise KeyError(f"no model assumption of the register names a scene of {names}")
     return "\n".join(lines) + "\n"

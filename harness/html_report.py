@@ -11,11 +11,15 @@ on a cell opens its trail (``harness/trail.py``): every engine's value, the regi
 the listing lines.  The table's HTML holds only the printed texts: the page's script colours
 the cells and writes their markers and hover text from the cells' data (``PageData``, JSON),
 which keeps each repeated thing once.
-Per other scene and per command's output: its markdown rendered (markdown-it, CommonMark with
-tables), a command's ``###`` subsections folded behind ``<details>`` (``folded``).  Every
+Per scene: its overview lines (other than a table's), its own report.md whole (``report_view``:
+its opening shown, each part folded under its heading, the register entries it names shown once in
+the page's register section, which a cell's trail reads too) and links to its folder's files; per
+command's output: its markdown, its ``###`` subsections folded behind ``<details>`` (``folded``).
+Every string is rendered by one renderer (``markdown_text.html``, CommonMark with tables).  Every
 section's figures with their captions (``figures.caption_of``), inline as lossless WebP
-(``data_uri``), and an overview of every table and engine (``diff.count_cells``, the counts
-every report shows).  A full run's page keeps within ``PAGE_BUDGET``.
+(``data_uri``), and an overview of every table and engine (``diff.count_cells``, the counts every
+report shows) that links each section and the folder's manifest.json.  A full run's page keeps
+within ``PAGE_BUDGET``.
 """
 from __future__ import annotations
 
@@ -32,15 +36,14 @@ from typing import TYPE_CHECKING
 
 import jinja2
 import pandas as pd
-from markdown_it import MarkdownIt
 import PIL
 from PIL import Image, features
 
-from . import build_cache, figures as figures_mod, listing_lines, manifest, register as register_mod
+from . import build_cache, figures as figures_mod, listing_lines, manifest, markdown_text, register as register_mod
 from .diff import CLASSES, COUNT_COLUMNS, EXPLAINED_BY, classify_cells, headline
 from .engines import ENGINES
 from .register import Deviation
-from .report import ASSUMPTIONS_WORDS, heading
+from .report import heading
 from .scenes import SCENES, TABLES
 from .trail import digits_reproduced, printed_digits, published_source, read_diff
 
@@ -90,22 +93,13 @@ def webp(png: bytes) -> bytes:
     return buffer.getvalue()
 
 
-def markdown_html(text: str, base: PurePosixPath = PurePosixPath("."), breaks: bool = False) -> str:
-    """Markdown as HTML (CommonMark and tables; raw HTML escaped; ``breaks``: a line break is
-    kept, as in a scene's overview lines).  Images are left out (a section shows its figures
-    with their captions); a relative link is made relative to the report's folder (``base``:
-    the markdown's folder there)."""
-    md = MarkdownIt("commonmark", {"html": False, "breaks": breaks}).enable("table")
-    md.renderer.rules["image"] = lambda tokens, idx, options, env: ""
+#: our markdown as HTML: the one way every string that reaches the page is rendered
+markdown_html = markdown_text.html
 
-    def link_open(tokens, idx, options, env):
-        href = tokens[idx].attrGet("href") or ""
-        if href and not href.startswith(("#", "/")) and ":" not in href.split("/")[0]:
-            tokens[idx].attrSet("href", (base / href).as_posix())
-        return md.renderer.renderToken(tokens, idx, options, env)
 
-    md.renderer.rules["link_open"] = link_open
-    return md.render(text)
+def inline(text: str) -> str:
+    """One line of our markdown (a skipped scene's reason, a failure, a note) as inline HTML."""
+    return markdown_text.html(text, inline=True)
 
 
 HEADING = re.compile(r"<h([1-6])>.*?</h\1>\n?", re.S)
@@ -156,10 +150,16 @@ def _line(line: listing_lines.ListingLine) -> dict:
 
 
 def _entry(entry: Deviation) -> dict:
+    """A register entry for the page: its words rendered as report.md's ``report.render_entry`` writes
+    them (printed and meant as code, the rest as written)."""
     edits = listing_lines.tagged(entry.id)
-    return {"id": entry.id, "kind": entry.kind, "certainty": entry.certainty, "title": entry.title,
-            "fields": entry.how_known() + [(name, getattr(entry, name))
-                                           for name in ("where", "printed", "meant", "evidence", "effect")],
+    words = entry.how_known() + [(name, getattr(entry, name))
+                                 for name in ("where", "printed", "meant", "evidence", "effect")]
+    code = markdown_text.code_span
+    return {"id": entry.id, "kind": entry.kind, "certainty": entry.certainty,
+            "title": inline(markdown_text.prose(entry.title)),
+            "fields": [(name, inline(code(text) if name in ("printed", "meant") else markdown_text.prose(text)))
+                       for name, text in words],
             "quirk": entry.quirk, "cited": [_line(c) for c in listing_lines.cited(entry)],
             "edits": [_line(e) for e in edits[:EDITS_SHOWN]], "more_edits": max(0, len(edits) - EDITS_SHOWN)}
 
@@ -275,21 +275,81 @@ def figures(folder: Path) -> list[dict]:
     return shown
 
 
+#: a part of a report.md whose text (what a reader reads, markup aside) is up to this many characters
+#: is shown open ("None.", a line of links); a longer one is folded, its heading the summary a reader
+#: opens it by (the page stays short enough to scroll through)
+OPEN_CHARS = 300
+#: the files of a section's folder the page links, in this order (outcome.json is the run's record)
+LINKED = ("*.md", "*.csv", "*.png", "*.svg")
+#: a report.md's part naming register entries (``report.scene_report``): the page shows each entry once
+REGISTER_PART = "Register entries involved"
+ENTRY_HEAD = re.compile(r"^#### (D\d+) ", re.M)
+
+
+def files(folder: Path, out_dir: Path) -> list[dict]:
+    """The files of a section's ``folder`` a reader opens (``LINKED``), each with its link from the page."""
+    found = [p for pattern in LINKED for p in sorted(folder.glob(pattern))] if folder.is_dir() else []
+    return [{"name": p.name, "href": p.relative_to(out_dir).as_posix()} for p in found]
+
+
+def report_parts(text: str) -> tuple[str, list[tuple[str, str]]]:
+    """A report.md as (what precedes its first ``## `` heading, [(each such heading, its part)]), its
+    ``# `` title left out (the section has its heading)."""
+    lines = text.splitlines()
+    if lines and lines[0].startswith("# "):
+        lines = lines[1:]
+    intro, parts = [], []
+    for line in lines:
+        if line.startswith("## "):
+            parts.append((line[3:].strip(), []))
+        else:
+            (parts[-1][1] if parts else intro).append(line)
+    return "\n".join(intro).strip(), [(head, "\n".join(body).strip()) for head, body in parts]
+
+
+def report_view(path: Path, out_dir: Path) -> dict:
+    """A section's report.md for the page, whole: its opening shown, each ``## `` part under its heading
+    (folded beyond ``OPEN_CHARS`` of text); a part of images only left out (the section shows its figures with
+    their captions); the register entries a part names linked to the page's register section, where
+    each entry is shown once.  ``ids``: those entries."""
+    base = PurePosixPath(path.parent.relative_to(out_dir).as_posix())
+    intro, parts = report_parts(path.read_text())
+    shown, ids = [], []
+    for head, body in parts:
+        if head == REGISTER_PART:
+            named = ENTRY_HEAD.findall(body)
+            ids += named
+            body = ", ".join(f"[{i}](#entry-{i})" for i in named) + ": each shown once, under [Register entries](#register)."
+        html = markdown_html(body, base)
+        words = " ".join(re.sub(r"<[^>]*>", " ", html).split())
+        if words:
+            shown.append({"head": inline(head), "html": html, "open": len(words) <= OPEN_CHARS})
+    return {"intro": markdown_html(intro, base), "parts": shown, "ids": ids}
+
+
 def _scene_view(folder: "Folder", section: "SceneSection", register, data: PageData) -> dict:
-    view = {"kind": "scene", "name": section.name, "title": section.title, "problem": section.problem,
-            "outcome": section.outcome, "figures": [], "table": None, "overview": "", "counts": [], "assumptions": []}
+    here = folder.out_dir / section.name
+    view = {"kind": "scene", "name": section.name, "title": section.title,
+            "problem": inline(markdown_text.prose(section.problem)), "outcome": section.outcome, "figures": [], "table": None, "overview": "", "counts": [], "report": None,
+            "files": files(here, folder.out_dir), "skipped": "", "failures": []}
     if section.outcome is None:
         return view
-    view["assumptions"] = [{"id": e.id, "title": e.title, "effect": e.effect}
-                           for e in register_mod.assumed_by(section.name, register)]
-    here = folder.out_dir / section.name
+    view["skipped"] = inline(section.outcome.skipped)
+    view["failures"] = [inline(markdown_text.prose(f)) for f in section.outcome.failures]
     view["figures"] = figures(here) if here.is_dir() else []
+    if (here / "report.md").is_file():
+        try:
+            view["report"] = report_view(here / "report.md", folder.out_dir)
+        except (OSError, ValueError) as exc:          # damaged (not UTF-8) where its run kept no record of it
+            said = f"**{section.name}/report.md cannot be read ({type(exc).__name__}); run the scene again.**"
+            view["report"] = {"intro": markdown_html(said), "parts": [], "ids": []}
+        view["used"] = set(view["report"]["ids"])
     if section.name in TABLES and (here / "diff.csv").is_file():
         diff = read_diff(TABLES[section.name], folder.out_dir)
         view["table"] = table_view(SCENES[section.name], diff, register, data)
         if section.outcome.counts is not None:
             view["counts"] = overview(section.outcome.counts)
-        view["used"] = {i for ids in diff["register_ids"].fillna("") for i in str(ids).split()}
+        view["used"] = view.get("used", set()) | {i for ids in diff["register_ids"].fillna("") for i in str(ids).split()}
     else:
         view["overview"] = markdown_html("\n".join(section.outcome.overview), breaks=True)
     return view
@@ -297,7 +357,7 @@ def _scene_view(folder: "Folder", section: "SceneSection", register, data: PageD
 
 def _output_view(folder: "Folder", section: "OutputSection") -> dict:
     view = {"kind": "output", "name": section.name, "title": section.title, "present": section.present,
-            "command": section.command, "html": "", "figures": []}
+            "command": section.command, "html": "", "figures": [], "files": files(section.folder, folder.out_dir)}
     if section.present:
         try:
             text = section.markdown.read_text()
@@ -305,7 +365,7 @@ def _output_view(folder: "Folder", section: "OutputSection") -> dict:
         except (OSError, ValueError) as exc:        # damaged: not UTF-8, a figure that is no image
             view["html"] = markdown_html(f"**{section.markdown.relative_to(folder.out_dir).as_posix()} or a figure "
                                          f"beside it cannot be read ({type(exc).__name__}); "
-                                         f"{manifest.code_span(section.command)} writes it again.**")
+                                         f"{markdown_text.code_span(section.command)} writes it again.**")
             return view
         body = text.split("\n", 1)[1] if text.startswith("# ") else text      # the section has its heading
         view["html"] = folded(markdown_html(body, PurePosixPath(section.folder.relative_to(folder.out_dir).as_posix())))
@@ -335,12 +395,13 @@ def render(folder: "Folder", latest: str = "") -> str:
     totals = folder.cell_totals()
     kinds = [k for k in EXPLAINED_BY if totals.get(k, 0)]      # the overview's kinds: those that explain a cell
     return template().render(
-        sections=sections, absent=folder.absent, absent_command=folder.absent_command, latest=latest,
-        notes=folder.notes, engines=ENGINES,
+        sections=sections, absent=folder.absent, absent_command=folder.absent_command, latest=inline(latest),
+        notes=[inline(note) for note in folder.notes], engines=ENGINES,
         statuses=CELL_STATUSES, columns=[(c, heading(c)) for c in COUNT_COLUMNS if c not in EXPLAINED_BY or c in kinds],
-        kinds=kinds, total=headline(totals, by_kind=True), assumptions_words=ASSUMPTIONS_WORDS,
+        kinds=kinds, total=headline(totals, by_kind=True),
+        manifest=manifest.FILE if (folder.out_dir / manifest.FILE).is_file() else "",
         made=(manifest.TITLE, markdown_html("\n".join(manifest.summary(folder.out_dir)))),
         entries=[_entry(register[i]) for i in sorted(used) if i in register],
-        blocks={block: {"notes": notes, "lines": [_line(line) for line in lines]}
+        blocks={block: {"notes": [inline(note) for note in notes], "lines": [_line(line) for line in lines]}
                 for (lines, notes), block in data.blocks.items()},
         cells_json=data.json())

@@ -66,7 +66,6 @@ import importlib.metadata
 import json
 import os
 import platform
-import re
 import shlex
 import shutil
 import subprocess
@@ -75,6 +74,7 @@ from functools import lru_cache
 from pathlib import Path
 from typing import Iterable
 
+from .markdown_text import code_span
 from .readings import COMPILER, FLAGS as READINGS_FLAGS
 from .run_folder import locked, replace_text, sha256
 
@@ -301,13 +301,6 @@ def _merge(out_dir: Path, run: dict, inputs: dict[str, str], written: dict[str, 
 def command_line(argv: Iterable[str]) -> str:
     """``linkrepro`` and its arguments as a shell would take them (each quoted where it must be)."""
     return shlex.join(["linkrepro", *argv])
-
-
-def code_span(text: str) -> str:
-    """``text`` as a markdown code span, whatever backticks it holds."""
-    fence = "`" * (max((len(run) for run in re.findall("`+", text)), default=0) + 1)
-    pad = " " if text.startswith("`") or text.endswith("`") else ""
-    return f"{fence}{pad}{text}{pad}{fence}"
 
 
 def write(out_dir: Path, command: str, scenes: Iterable[str] = (), outputs: Iterable[str] = (),

@@ -13,17 +13,20 @@ from matplotlib.figure import Figure
 
 from .diff import EXPLAINED_BY, classify_cells, column_max, count_cells
 from .figures import ENGINE_STYLE, MAX_WIDTH_IN, RC, new_figure, save
+from .markdown_text import code_span, prose
 from .register import Deviation, assumed_by
 
 
 def markdown_table(frame: pd.DataFrame, floatfmt: str = "{:.3g}") -> str:
-    cols = [str(c) for c in frame.columns]
-    head = "| " + " | ".join([frame.index.name or ""] + cols) + " |"
+    """``frame`` as a markdown table, its index first; floats as ``floatfmt``, any other cell's text as
+    written (``prose``: a ``|Delta|`` or ``REAL*4`` in a cell is not markup)."""
+    cols = [prose(str(c)) for c in frame.columns]
+    head = "| " + " | ".join([prose(frame.index.name or "")] + cols) + " |"
     rule = "|" + "---|" * (len(cols) + 1)
     lines = [head, rule]
     for idx, row in frame.iterrows():
-        cells = [floatfmt.format(v) if isinstance(v, float) else str(v) for v in row]
-        lines.append("| " + " | ".join([str(idx)] + cells) + " |")
+        cells = [floatfmt.format(v) if isinstance(v, float) else prose(str(v)) for v in row]
+        lines.append("| " + " | ".join([prose(str(idx))] + cells) + " |")
     return "\n".join(lines)
 
 
@@ -234,16 +237,17 @@ def assumptions_markdown(scene: str, register: dict[str, Deviation]) -> list[str
     if not found:
         return []
     return (["## What the corrected engine still assumes", "", ASSUMPTIONS_WORDS, ""]
-            + [f"- **{entry.id}** {entry.title}. {entry.effect}" for entry in found] + [""])
+            + [f"- **{entry.id}** {prose(entry.title)}. {prose(entry.effect)}" for entry in found] + [""])
 
 
 def render_entry(entry: Deviation) -> str:
-    lines = [f"#### {entry.id} ({entry.kind}{', ' + entry.certainty if entry.certainty else ''}): {entry.title}",
-             *(f"- {name}: {text}" for name, text in entry.how_known()),
-             f"- where: {entry.where}", f"- printed: `{entry.printed}`", f"- meant: `{entry.meant}`",
-             f"- evidence: {entry.evidence}", f"- effect: {entry.effect}"]
+    """A register entry in markdown: its words as written (``prose``), printed, meant and quirk as code."""
+    lines = [f"#### {entry.id} ({entry.kind}{', ' + entry.certainty if entry.certainty else ''}): {prose(entry.title)}",
+             *(f"- {name}: {prose(text)}" for name, text in entry.how_known()),
+             f"- where: {prose(entry.where)}", f"- printed: {code_span(entry.printed)}",
+             f"- meant: {code_span(entry.meant)}", f"- evidence: {prose(entry.evidence)}", f"- effect: {prose(entry.effect)}"]
     if entry.quirk:
-        lines.append(f"- port quirk: `{entry.quirk}`")
+        lines.append(f"- port quirk: {code_span(entry.quirk)}")
     return "\n".join(lines)
 
 

@@ -24,6 +24,7 @@ import pandas as pd
 
 from . import manifest, register as register_mod, run_folder
 from .diff import headline, total_counts
+from .markdown_text import prose
 from .report import COUNTS_WORDS
 from .scene import Outcome
 from .scenes import SCENES, THESES, commands_of
@@ -109,7 +110,7 @@ def _notes(out_dir: Path) -> list[str]:
     unknown = sorted(p.parent.name for p in out_dir.glob(f"*/{Outcome.FILE}")
                      if p.parent.name not in SCENES and not p.parent.name.startswith("."))
     if unknown:
-        notes.append(f"Not shown: {', '.join(unknown)} (a folder holding {Outcome.FILE} but no scene of this "
+        notes.append(f"Not shown: {', '.join(map(prose, unknown))} (a folder holding {Outcome.FILE} but no scene of this "
                      "linkrepro: renamed?).")
     killed, running = run_folder.unfinished(out_dir)
     if killed:
@@ -149,13 +150,13 @@ def collect(out_dir: Path) -> Folder:
 
 def _scene_lines(section: SceneSection, register: dict) -> list[str]:
     if section.outcome is None:
-        return [f"## {section.name}", "", section.title, "", f"**{section.problem}**", ""]
+        return [f"## {section.name}", "", section.title, "", f"**{prose(section.problem)}**", ""]
     o = section.outcome
     said = register_mod.assumptions_said(o.scene, register)
     lines = [f"## [{o.scene}]({o.scene}/report.md)", "", o.title, "", *o.overview, "",
              *([said, ""] if said else []), f"Run {o.finished}, wall time {o.seconds:.2f} s.", ""]
     skipped = [f"**Skipped: {o.skipped}**", ""] if o.skipped else []
-    return lines + skipped + [f"**{failure}**\n" for failure in o.failures]
+    return lines + skipped + [f"**{prose(failure)}**\n" for failure in o.failures]
 
 
 def _output_lines(section: OutputSection, out_dir: Path) -> list[str]:
@@ -178,7 +179,7 @@ def markdown(folder: Folder, latest: str = "") -> str:
     for section in folder.sections:
         lines += (_scene_lines(section, register) if isinstance(section, SceneSection)
                   else _output_lines(section, folder.out_dir))
-    failures = [f"{o.scene}: {f}" for o in folder.outcomes for f in o.failures]
+    failures = [f"{o.scene}: {prose(f)}" for o in folder.outcomes for f in o.failures]
     if failures:
         lines += ["## Failures", "", *[f"- **{failure}**" for failure in failures], ""]
     if folder.absent:

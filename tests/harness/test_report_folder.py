@@ -101,6 +101,20 @@ def test_an_unreadable_outcome_is_said_in_its_section(two_runs, tmp_path):
     assert f"## {FIRST}" in md and "cannot be read" in md and "run the scene again" in md
 
 
+def test_a_scene_report_that_cannot_be_read_is_said_in_its_section(two_runs, tmp_path):
+    """A report.md its run kept no record of (an outcome written before outcomes recorded their
+    files), not UTF-8: the page says so in the scene's section and is written."""
+    out = tmp_path / "copy"
+    (out / FIRST).mkdir(parents=True)
+    outcome = Outcome.load(two_runs, FIRST)
+    outcome.files = None
+    outcome.save(out)
+    (out / FIRST / "report.md").write_bytes(b"# T\n\xff\xfe not UTF-8\n")
+    report_folder.write(out)
+    section = (out / "report.html").read_text().split(f'<section id="{FIRST}">')[1].split("</section>")[0]
+    assert f"{FIRST}/report.md cannot be read (UnicodeDecodeError); run the scene again" in section
+
+
 def test_a_report_that_cannot_be_built_leaves_the_last_one(two_runs, monkeypatch):
     before = {name: (two_runs / name).read_text() for name in report_folder.FILES}
 

@@ -1,8 +1,10 @@
 """The HTML report and `linkrepro explain`: Table I, Table 5.1 and the conditioning study run into a
 temporary folder (readings skipped), then Table 5.1 rerun alone, and a quick bench into its
-bench/; the page is checked as a file (self-contained) and in headless Chromium (Debian's
+bench/, and Rahman (1996)'s multibody scene saved as skipped (Exudyn missing); the page is checked
+as a file (self-contained; every string as written) and in headless Chromium (Debian's
 ``chromium`` and ``chromium-driver``, driven by Selenium: nothing is downloaded): every section
-rendered, headings clear of the header, the cell's panel, units, a keyboard walk, contrast.
+rendered and holding its report.md whole, headings clear of the header, the cell's panel, units,
+a keyboard walk, contrast.
 Screenshots of the main views are kept in ``test-artifacts/report/`` (look at them).
 
 The expectations come from outside the run: the register (harness/deviations.toml) says which
@@ -19,14 +21,17 @@ from html.parser import HTMLParser
 from pathlib import Path
 
 import pytest
-from markupsafe import escape
 
-from linkrepro.harness import describe, register, report_folder
+from linkrepro.harness import describe, markdown_text, multibody, register, report, report_folder
 from linkrepro.harness.bench_run import run_bench
 from linkrepro.harness.run import reproduce
+from linkrepro.harness.scene import Outcome
+from linkrepro.harness.scenes import SCENES
+from linkrepro.harness.scenes.rahman1996.arithmetic_variants import VARIANTS
 
 SCENE, ROW, COLUMN = "ali1977-table1", "160", "src_dx"
 OTHERS = ("rahman1996-table5_1", "ali1977-conditioning")
+SKIPPED = "rahman1996-multibody"         # shown as skipped where Exudyn cannot be imported
 LISTINGS = Path(__file__).resolve().parents[2] / "legacy"
 SHOTS = Path(__file__).resolve().parents[2] / "test-artifacts" / "report"
 
@@ -37,8 +42,18 @@ def run_dir(tmp_path_factory) -> Path:
     reproduce([SCENE, *OTHERS], out, measure_readings=False)
     reproduce([OTHERS[0]], out, measure_readings=False)           # a single-scene rerun
     run_bench(1, out / "bench", quick=True)
+    Outcome(SKIPPED, SCENES[SKIPPED].title, [], 0.0, skipped=exudyn_missing()).save(out)
     report_folder.write(out)
     return out
+
+
+def exudyn_missing() -> str:
+    """Why a multibody scene is skipped where Exudyn cannot be imported (``multibody.require``'s words)."""
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setitem(sys.modules, "exudyn", None)            # import exudyn raises ImportError
+        with pytest.raises(multibody.ExudynMissing) as missing:
+            multibody.require()
+    return str(missing.value)
 
 
 def misprint_ids() -> set[str]:
@@ -128,15 +143,104 @@ def test_each_scene_states_the_model_assumptions_its_corrected_engine_keeps(run_
         assert ("What the corrected engine still assumes" in own) == bool(assumed(name)), name
         assert ("model-assumption" in section) == ("still assumes" in html) == bool(assumed(name)), name
         for e in assumed(name):
-            assert f"- **{e.id}** {e.title}. {e.effect}" in own
+            assert f"- **{e.id}** {markdown_text.prose(e.title)}. {markdown_text.prose(e.effect)}" in own
             assert f"{e.id} {e.title}" in section
-            assert f"<strong>{e.id}</strong> {escape(e.title)}. {escape(e.effect)}" in html
+            assert squash(f"{e.id} {e.title}. {e.effect}".replace("`", "")) in squash(text_of(html)[0])
 
 
 def test_explain_unknown_row_is_a_usage_error(run_dir):
     done = subprocess.run([sys.executable, "-m", "linkrepro", "explain", SCENE, "165", COLUMN, "--out", str(run_dir)],
                           capture_output=True, text=True)
     assert done.returncode == 2 and "no row '165'" in done.stderr and "Traceback" not in done.stderr
+
+
+class _Reader(HTMLParser):
+    """An HTML fragment as a reader sees it: its text, its code's texts, and the markdown left in it
+    (``slips``): a backtick outside code, or emphasis glued to a letter, digit, ``_`` or ``*`` (an
+    asterisk or underscore of code text read as markup: REAL*8 ... 4.0*ATAN, KED_*, NEWTON_*)."""
+    GLUE = re.compile(r"[\w*]")
+    BLOCKS = {"p", "li", "td", "th", "tr", "div", "summary", "details", "dd", "dt", "h2", "h3", "h4", "pre",
+              "figcaption"}
+
+    def __init__(self):
+        super().__init__(convert_charrefs=True)
+        self.text, self.codes, self.slips = "", [], []
+        self.in_code, self.hidden, self.emphasis, self.closed = 0, 0, [], None
+
+    def handle_starttag(self, tag, attrs):
+        self.hidden += tag in ("script", "style", "template")
+        if tag in ("code", "pre"):
+            self.in_code += 1
+            self.codes.append("")
+        if tag in ("em", "strong"):
+            self.emphasis.append(len(self.text))
+            if self.text and self.GLUE.match(self.text[-1]):
+                self.slips.append(f"<{tag}> after {self.text[-30:]!r}")
+
+    def handle_endtag(self, tag):
+        self.hidden -= tag in ("script", "style", "template")
+        self.in_code -= tag in ("code", "pre")
+        if tag in ("em", "strong") and self.emphasis:
+            self.closed = (len(self.text), tag, self.text[self.emphasis.pop():])
+        if tag in self.BLOCKS:
+            self.text += " "
+
+    def handle_data(self, data):
+        if self.hidden:
+            return
+        if self.closed and self.closed[0] == len(self.text) and self.GLUE.match(data):
+            self.slips.append(f"</{self.closed[1]}> before {data[:20]!r} (emphasised {self.closed[2][-30:]!r})")
+        if self.in_code:
+            self.codes[-1] += data
+        elif "`" in data:
+            self.slips.append(f"a backtick in {data.strip()[:80]!r}")
+        self.text += data
+
+
+def text_of(html: str) -> tuple[str, list[str], list[str]]:
+    """``html``'s text, its code's texts, its slips (``_Reader``)."""
+    reader = _Reader()
+    reader.feed(html)
+    return reader.text, reader.codes, reader.slips
+
+
+def squash(text: str) -> str:
+    return " ".join(text.split())
+
+
+def page_sections(run_dir: Path) -> dict[str, str]:
+    """Each section of the page: its id and its HTML."""
+    return dict(re.findall(r'<section id="([^"]+)">(.*?)</section>', (run_dir / "report.html").read_text(), re.S))
+
+
+def test_every_section_renders_text_as_written(run_dir):
+    """No section shows markdown as text or loses an asterisk of code; a skipped scene's reason is
+    its words with its command as code; the bench's FORTRAN names keep their asterisks."""
+    sections = page_sections(run_dir)
+    assert {SCENE, *OTHERS, SKIPPED, "bench", "register"} <= set(sections)
+    assert {name: text_of(html)[2] for name, html in sections.items() if text_of(html)[2]} == {}
+    text, codes, _ = text_of(sections[SKIPPED])
+    reason = exudyn_missing()
+    assert "`" in reason and squash(reason.replace("`", "")) in squash(text)
+    assert multibody.INSTALL in codes
+    bench = (run_dir / "bench" / "bench.md").read_text()
+    named = re.findall(r"\b[A-Z]+_\*", bench)                # the flop counts' names, KED_* ...
+    assert named and set(named) <= set(text_of(sections["bench"])[1])
+
+
+def test_register_words_and_variants_render_as_written():
+    """Every register entry as report.md writes it (``report.render_entry``) and every arithmetic
+    variant's description read back from the HTML are the register's text: nothing taken as markup
+    (its backticks mark code)."""
+    for entry in register.load().values():
+        text, codes, slips = text_of(markdown_text.html(report.render_entry(entry)))
+        assert slips == [], entry.id
+        for words in (entry.title, entry.where, entry.evidence, entry.effect):
+            assert squash(words.replace("`", "")) in squash(text), (entry.id, words)
+        assert entry.printed in codes and entry.meant in codes, entry.id
+    for variant in VARIANTS:
+        text, _, slips = text_of(markdown_text.html(markdown_text.prose(variant.machine), inline=True))
+        assert slips == [] and text == variant.machine.replace("`", "")
 
 
 def _browser(size: tuple[int, int] = (1400, 900)):
@@ -263,6 +367,59 @@ def test_the_bench_s_subsections_are_folded_and_say_what_they_hold(page):
     assert abs(rect(page, head)["top"] - rect(page, header)["bottom"]) < 1.5
 
 
+#: markdown's emphasis (``*words*``, ``**words**``, never inside a word) and links, as the words they show
+EMPHASIS = re.compile(r"(?<![\\\w])\*\*?(?=\S)(.+?)(?<=\S)\*\*?(?![\w*])|!?\[([^\]]*)\]\([^)]*\)")
+
+
+def report_fragments(markdown: str) -> tuple[list[str], list[str]]:
+    """What a reader reads of a report.md, its markup taken off line by line (apart from the page's
+    renderer): each heading's, paragraph's, list item's and table cell's words; and, apart, the
+    lines of its part "Register entries involved" (the page shows each entry once, in its register
+    section).  Images are left out, and a part of images only (the page shows the figures with
+    their captions)."""
+    shown, entries, part = [], [], ""
+    for line in markdown.splitlines()[1:]:                    # the title is the section's heading
+        if line.startswith("## "):
+            if shown and shown[-1] == squash(part):
+                shown.pop()                                   # the part before held images only
+            part = line[3:]
+        if not line.strip() or line.startswith(("![", "|---")):
+            continue
+        field = part == "Register entries involved" and line.startswith("- ")     # an entry's field: name, words
+        line = re.sub(r"^(#+ |- |\d+\. )", "", line)
+        cells = ([c for c in re.split(r"(?<!\\)\|", line) if c.strip()] if line.startswith("|")
+                 else line.split(": ", 1) if field else [line])
+        for cell in cells:
+            pieces = re.split(r"(`+)(.+?)\1", cell)             # code spans kept as written
+            words = "".join(p if i % 3 == 2 else "" if i % 3 == 1 else
+                            re.sub(r"\\(.)", r"\1", re.sub(EMPHASIS, r"\1\2", p))
+                            for i, p in enumerate(pieces))
+            in_entries = part == "Register entries involved" and not line.startswith("Register")
+            (entries if in_entries else shown).append(squash(words))
+    return shown[:-1] if shown and shown[-1] == squash(part) else shown, entries
+
+
+def test_each_section_holds_its_report_whole(page, run_dir):
+    """Each section holds every word of its folder's report.md (scene or command; closed parts
+    included), its register entries in the page's register section, links to its files and back
+    to the overview; the overview links each section and the manifest."""
+    from selenium.webdriver.common.by import By
+    texts = page.execute_script("const t = {}; for (const s of document.querySelectorAll('main section')) "
+                                "t[s.id] = s.textContent.split(/\\s+/).join(' '); return t;")
+    reports = {p.parent.name: p for p in run_dir.glob("*/*.md") if p.parent.name in texts}
+    assert {SCENE, *OTHERS, "bench"} <= set(reports)
+    for name, path in reports.items():
+        shown, entries = report_fragments(path.read_text())
+        assert [f for f in shown if f not in texts[name]] == [], name
+        assert [f for f in entries if f not in texts["register"]] == [], name
+        links = [a.get_attribute("href") for a in page.find_elements(By.CSS_SELECTOR, f"#{name} .files a")]
+        named = {link.split("/")[-1] for link in links}
+        assert path.name in named and any(link.endswith("#overview") for link in links), (name, links)
+        assert {p.name for p in path.parent.glob("*.csv")} <= named, name
+    overview = {a.get_attribute("href").split("/")[-1] for a in page.find_elements(By.CSS_SELECTOR, "#sections a")}
+    assert "manifest.json" in overview and {f"report.html#{n}" for n in reports} <= overview
+
+
 def test_each_heading_is_clear_of_the_header_after_its_link_is_clicked(page):
     from selenium.webdriver.common.by import By
     links = page.find_elements(By.CSS_SELECTOR, "header nav a")
@@ -294,7 +451,8 @@ def test_the_panel_fits_and_leaves_the_cell_in_view(page):
         box, side = rect(page, cell), rect(page, panel)
         header = rect(page, page.find_element(By.TAG_NAME, "header"))
         assert box["left"] >= 0 and box["right"] <= side["left"], (column, box, side)
-        assert box["top"] >= header["bottom"] and box["bottom"] <= page.execute_script("return innerHeight")
+        # within a pixel: the page scrolls by whole pixels, the cell may sit at a fraction of one (its text's line height)
+        assert box["top"] >= header["bottom"] - 1 and box["bottom"] <= page.execute_script("return innerHeight") + 1
         if column == COLUMN:
             shot(page, "panel")
 

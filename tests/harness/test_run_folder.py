@@ -62,7 +62,7 @@ def _done_in_reports(folder: Path) -> tuple[set[str], set[str]]:
     md = (folder / "report.md").read_text()
     page = (folder / "report.html").read_text()
     return (set(re.findall(r"^## \[([^\]]+)\]\(\1/report\.md\)$", md, re.M)),
-            set(re.findall(r'<section id="([^"]+)">\n<h2>[^\n]*\n<p class="when">', page)))
+            set(re.findall(r'<section id="([^"]+)">\n<h2>[^\n]*\n(?:<p class="files">[^\n]*\n)?<p class="when">', page)))
 
 
 def _agree(folder: Path, whole: dict[str, dict[str, bytes]], reference: Path) -> set[str]:

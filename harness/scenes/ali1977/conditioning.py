@@ -8,7 +8,7 @@ Case I source deflection (dx, dy, l2 rot: one vector, in) of two engines against
 equations evaluated in 60 digits (``exact.case1_source``):
 
 - ``float64``: the corrected port (every quirk off);
-- ``real4``: the same with the listings' REAL*4 storage of matrices and loads (the arithmetic
+- ``real4``: the same with the listings' ``REAL*4`` storage of matrices and loads (the arithmetic
   of legacy and of the listing port, without their bugs, so that the 60-digit reference applies).
 
 Each point's relative error is set against its condition (``port.ali1977.conditioning``:

@@ -314,9 +314,8 @@ def report(frames, claims, study, singular, legacy, plots, timings) -> str:
              "## Timings (this run)", ""]
     lines += [f"- {k}: {v:.2f} s" for k, v in timings.items()]
     lines += ["", "## Figures", ""] + [f"![{p.stem}]({p.name})" for p in plots]
-    for engine, frame in frames.items():
-        counts = frame["status"].value_counts().to_dict()
-        lines.insert(4, f"- {engine}: positions by status {counts}")
+    lines[4:4] = [f"- {engine}: positions by status {frame['status'].value_counts().to_dict()}"
+                  for engine, frame in reversed(frames.items())] + [""]     # a list, then the paragraph after it
     return "\n".join(lines) + "\n"
 
 
@@ -324,7 +323,7 @@ def overview(result: dict) -> list[str]:
     """The run report's table: each claim's verdicts per engine."""
     verdicts = result["claims"].groupby(["engine", "verdict"]).size().unstack(fill_value=0)
     return (["No numeric table is printed; each claim of section 3.2, per engine "
-             "(see the scene report and register D085-D094):", "",
+             f"(see [the scene report]({NAME}/report.md) and register D085-D094):", "",
              "| engine | " + " | ".join(verdicts.columns) + " |", "|---|" + "---|" * len(verdicts.columns)]
             + [f"| {engine} | " + " | ".join(str(v) for v in row) + " |" for engine, row in verdicts.iterrows()])
 

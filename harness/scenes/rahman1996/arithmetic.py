@@ -37,6 +37,7 @@ import pandas as pd
 
 from ... import progress
 from ...csv_output import write_csv
+from ...markdown_text import code_span, prose
 from ...published_tables import PublishedTable
 from ...readings import CompilerError
 from .arithmetic_build import Measurement, ReferenceFailed, measure
@@ -310,7 +311,7 @@ def as_markdown(m: Measurement, counts: pd.DataFrame, cells: pd.DataFrame) -> st
              "with REAL arrays. The variants stand for the machines below; 'documented' means the "
              "arithmetic is described for compilers of the time.", "",
              "| variant | how | stands for | documented |", "|---|---|---|---|"]
-    lines += [f"| {v.name} | `{v.how}` | {v.machine} | {'yes' if v.documented else 'no'} |" for v in m.variants]
+    lines += [f"| {v.name} | {code_span(v.how)} | {prose(v.machine)} | {'yes' if v.documented else 'no'} |" for v in m.variants]
     if m.failures:
         lines += ["", "Not run on this machine: " + "; ".join(f"{n} ({why})" for n, why in m.failures.items()) + "."]
     head = [t.replace("_", ".") for t in TABLES]
