@@ -1,0 +1,10 @@
+"""How large a test runs: ``make test`` runs each property at the size that shows it; ``make fuzz``
+sets ``LINKREPRO_FULL_TESTS=1`` and runs the whole version (every worker and context as the
+command uses them, every block and example twice over where a test says so).
+
+A test that has two sizes says in its docstring what each shows.
+"""
+import os
+
+FULL_ENV = "LINKREPRO_FULL_TESTS"
+FULL = os.environ.get(FULL_ENV) == "1"
