@@ -197,6 +197,14 @@ def check_problems(check: reg.Check) -> list[str]:
     return reg.figures_reproduced(check.figures, out.stdout)
 
 
+@lru_cache(maxsize=None)
+def command_options(name: str) -> tuple[int, frozenset[str]]:
+    """``linkrepro NAME --help``'s exit status and the options it lists (run once a command)."""
+    out = subprocess.run([sys.executable, "-m", "linkrepro", name, "--help"], capture_output=True,
+                         text=True, cwd=ROOT, timeout=CHILD_SECONDS)
+    return out.returncode, frozenset(re.findall(r"--[\w-]+", out.stdout))
+
+
 def command_problems(command: str) -> list[str]:
     """Whether a quoted command can be run as written (its figures are ``check_problems``')."""
     words = shlex.split(command)
@@ -217,11 +225,9 @@ def command_problems(command: str) -> list[str]:
     if words[0] == "linkrepro":
         if words[1] not in cli_commands():
             return [f"{command}: linkrepro has no command {words[1]!r} ({', '.join(cli_commands())})"]
-        out = subprocess.run([sys.executable, "-m", "linkrepro", *words[1:2], "--help"], capture_output=True,
-                             text=True, cwd=ROOT, timeout=CHILD_SECONDS)
-        options = set(re.findall(r"--[\w-]+", out.stdout))
+        status, options = command_options(words[1])
         unknown = [w for w in words[2:] if w.startswith("--") and w.split("=")[0] not in options]
-        return [f"{command}: no option {unknown}"] if out.returncode or unknown else []
+        return [f"{command}: no option {unknown}"] if status or unknown else []
     return [f"{command}: not a command of this project"]
 
 
