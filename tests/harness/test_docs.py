@@ -3,8 +3,8 @@
 - every generated block (``harness/docs.py``: the counts of a run, the explain trail, the CSSP's
   differential sample) is what a fresh computation gives now (the CSSP's sample only in
   ``make fuzz``: ``WHOLE_ONLY``);
-- every ``python`` block runs, each in a fresh interpreter (an intended error is caught in the
-  block itself);
+- every ``python`` block runs, each as ``python -c`` runs it (``tests/python_c.py``; an intended
+  error is caught in the block itself);
 - every relative link leads to a file, and no page speaks of tools a reader does not have or of
   issue numbers they cannot look up;
 - the README stays a newcomer's page: short, the findings in docs/.
@@ -12,14 +12,12 @@
 from __future__ import annotations
 
 import re
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
 
 from linkrepro.harness import docs
-from tests.patience import CHILD_SECONDS
+from tests import python_c
 from tests.sizes import FULL
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -59,10 +57,15 @@ def test_the_generated_blocks_are_there():
 EXAMPLES = [(p.relative_to(ROOT).as_posix(), k, code) for p in PAGES for k, code in enumerate(PYTHON.findall(p.read_text()))]
 
 
+#: what the examples import: imported once, before they run (``tests/python_c.py``)
+EXAMPLE_IMPORTS = frozenset().union(*(python_c.imports(code) for _, _, code in EXAMPLES))
+
+
 @pytest.mark.parametrize("page, index, code", EXAMPLES, ids=[f"{p}#{k}" for p, k, _ in EXAMPLES])
 def test_every_python_example_runs(page, index, code, tmp_path):
-    done = subprocess.run([sys.executable, "-c", code], cwd=tmp_path, capture_output=True, text=True,
-                          timeout=CHILD_SECONDS)
+    """As ``python -c``: in make test forked from a process that has imported what they import, in a
+    fresh interpreter with LINKREPRO_FULL_TESTS=1."""
+    done = python_c.run(code, tmp_path, EXAMPLE_IMPORTS)
     assert done.returncode == 0, f"{page} example {index}:\n{done.stderr[-2000:]}"
 
 

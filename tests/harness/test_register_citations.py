@@ -37,11 +37,14 @@ from pathlib import Path
 import pytest
 
 from linkrepro.harness import register as reg
+from tests import python_c
 from tests.patience import CHILD_SECONDS
 
 ROOT = Path(__file__).resolve().parents[2]
 RAW = reg.REGISTER_PATH.read_text()
 ENTRIES = reg.load()
+#: what the checks' code imports: imported once, before the checks run (``run_code``)
+CHECK_IMPORTS = frozenset().union(*(python_c.imports(c.code) for e in ENTRIES.values() for c in e.checks if c.code))
 SLOW = os.environ.get("LINKREPRO_SLOW_CHECKS", "") not in ("", "0")
 
 #: a repository path: one of the package's top folders, a relative path under it
@@ -179,8 +182,9 @@ def quoted_commands(text: str) -> list[str]:
 
 
 def run_code(code: str) -> subprocess.CompletedProcess:
-    return subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT,
-                          timeout=CHILD_SECONDS)
+    """``python -c code`` in the repository (``tests/python_c.py``: in a child of a server that has
+    imported what every check imports, or with LINKREPRO_FULL_TESTS=1 a fresh interpreter)."""
+    return python_c.run(code, ROOT, CHECK_IMPORTS)
 
 
 def check_problems(check: reg.Check) -> list[str]:
