@@ -43,8 +43,9 @@ from tests.patience import CHILD_SECONDS
 ROOT = Path(__file__).resolve().parents[2]
 RAW = reg.REGISTER_PATH.read_text()
 ENTRIES = reg.load()
-#: what the checks' code imports: imported once, before the checks run (``run_code``)
-CHECK_IMPORTS = frozenset().union(*(python_c.imports(c.code) for e in ENTRIES.values() for c in e.checks if c.code))
+#: what the checks' code imports, and pytest (a quoted ``python -m pytest`` collects through ``run_code``):
+#: imported once, before the checks run
+CHECK_IMPORTS = frozenset({"pytest"}).union(*(python_c.imports(c.code) for e in ENTRIES.values() for c in e.checks if c.code))
 SLOW = os.environ.get("LINKREPRO_SLOW_CHECKS", "") not in ("", "0")
 
 #: a repository path: one of the package's top folders, a relative path under it
@@ -215,8 +216,8 @@ def command_problems(command: str) -> list[str]:
     if words[0] in ("python", "python3") and words[1:2] == ["-c"]:
         return [] if len(words) == 3 else [f"{command}: python -c takes one argument"]
     if words[0] in ("python", "python3") and words[1:3] == ["-m", "pytest"]:
-        out = subprocess.run([sys.executable, "-m", "pytest", "--collect-only", "-q", "-p", "no:cacheprovider",
-                              *words[3:]], capture_output=True, text=True, cwd=ROOT, timeout=CHILD_SECONDS)
+        args = ["--collect-only", "-q", "-p", "no:cacheprovider", *words[3:]]
+        out = run_code(f"import sys, pytest; sys.exit(pytest.main({args!r}))")     # python -m pytest ARGS
         selected = re.search(r"(\d+)(?:/\d+)? tests? (?:collected|selected)", out.stdout)
         if out.returncode != 0 or not selected or int(selected.group(1)) == 0:
             return [f"{command}: selects no test ({out.stdout.strip()[-500:]})"]
