@@ -10,14 +10,16 @@ fresh interpreter, as written.
 from __future__ import annotations
 
 import ast
-import multiprocessing
+import atexit
 import os
+import socket
 import subprocess
 import sys
 import tempfile
 import traceback
 import types
 from functools import lru_cache
+from multiprocessing.connection import Connection
 from pathlib import Path
 
 from tests.patience import CHILD_SECONDS
@@ -50,30 +52,37 @@ def run(code: str, cwd: Path | str, preload: frozenset[str] = frozenset()) -> su
 
 
 @lru_cache(maxsize=None)
-def _server(preload: frozenset[str]):
-    ctx = multiprocessing.get_context("spawn")
-    parent, child = ctx.Pipe()
-    ctx.Process(target=_serve, args=(child, sorted(preload)), daemon=True).start()
-    child.close()
-    return parent
+def _server(preload: frozenset[str]) -> Connection:
+    """A server for ``preload``: an interpreter (not a multiprocessing child, which a test of the
+    runs' workers would count as left behind) that answers on a socket; this process ends it at exit."""
+    ours, theirs = socket.socketpair()
+    start = f"import sys; sys.path[:0] = {sys.path!r}; from tests.python_c import serve; serve({theirs.fileno()}, {sorted(preload)!r})"
+    server = subprocess.Popen([sys.executable, "-c", start], pass_fds=(theirs.fileno(),),
+                              stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    theirs.close()
+    conn = Connection(ours.detach())
+    atexit.register(lambda: (conn.close(), server.wait(CHILD_SECONDS)))      # its end: EOF
+    return conn
 
 
-def _serve(conn, preload: list[str]) -> None:
-    """The server: import ``preload``, then fork a child for each code received."""
+def serve(fd: int, preload: list[str]) -> None:
+    """The server: import ``preload``, then fork a child for each code received on ``fd``."""
     import importlib
     for name in preload:
         try:
             importlib.import_module(name)
         except Exception:           # noqa: BLE001 - the child imports it again and says why
             pass
+    conn = Connection(fd)
     while True:
         try:
             code, cwd = conn.recv()
-        except EOFError:
+        except (EOFError, OSError):
             return
         with tempfile.TemporaryFile() as out, tempfile.TemporaryFile() as err:
             pid = os.fork()
             if pid == 0:
+                conn.close()
                 os.dup2(out.fileno(), 1)
                 os.dup2(err.fileno(), 2)
                 os._exit(_child(code, cwd))
