@@ -1,8 +1,6 @@
 """How large a test runs: ``make test`` runs each property at the size that shows it; ``make fuzz``
-sets ``LINKREPRO_FULL_TESTS=1`` and runs the whole version (every worker and context as the
-command uses them, every block and example twice over where a test says so).
-
-A test that has two sizes says in its docstring what each shows.
+sets ``LINKREPRO_FULL_TESTS=1`` and runs the whole version (docs/reliability.md, "The tests: two
+sizes").  A test that has two sizes says in its docstring what each runs.
 """
 import os
 
