@@ -28,7 +28,10 @@ bench: $(VENV)/.installed
 	$(BIN)/linkrepro bench --out out/bench
 
 # the fuzz's seeds (each 20,000 calls, about two minutes on 2 cores): `make fuzz SEEDS=7` for another;
-# then the property tests at ten times the examples, the register's slow checks, the numba cache race whole
+# then the property tests at ten times the examples, the register's slow checks, the numba cache race whole,
+# and the tests that `make test` runs small at their whole size (LINKREPRO_FULL_TESTS=1, tests/sizes.py: the
+# fuzz runner's known calls with the fuzz's own context, its slice in two workers, every docs block recomputed,
+# the docs' examples and the register's checks each in a fresh interpreter)
 SEEDS ?= 0 1 2
 fuzz: $(VENV)/.installed
 	for seed in $(SEEDS); do \
@@ -39,7 +42,9 @@ fuzz: $(VENV)/.installed
 	  tests/rahman1996/test_differential.py tests/rahman1996/test_differential_qprog.py \
 	  tests/rahman1996/test_qprog_scaling.py tests/rahman1996/test_qprog_feasibility.py \
 	  tests/rahman1996/test_arguments.py
-	LINKREPRO_SLOW_CHECKS=1 $(BIN)/python -m pytest -q tests/harness/test_register_citations.py
+	LINKREPRO_SLOW_CHECKS=1 LINKREPRO_FULL_TESTS=1 $(BIN)/python -m pytest -q tests/harness/test_register_citations.py
+	LINKREPRO_FULL_TESTS=1 $(BIN)/python -m pytest -q -n auto tests/harness/test_fuzz.py tests/harness/test_docs.py \
+	  tests/test_python_c.py
 	LINKREPRO_FULL_NUMBA_RACE=1 $(BIN)/python -m pytest -q tests/harness/test_numba_cache.py
 
 setup: $(VENV)/.installed

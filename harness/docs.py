@@ -128,9 +128,10 @@ def thesis_blocks() -> dict:
     return {name: make for module in hook_modules("docs") for name, make in module.BLOCKS.items()}
 
 
-def filled(text: str) -> str:
-    """``text`` with every generated block computed afresh."""
-    return BLOCK.sub(lambda m: m.group(1) + block(m.group("name")) + m.group(4), text)
+def filled(text: str, keep: frozenset[str] = frozenset()) -> str:
+    """``text`` with every generated block computed afresh (those named in ``keep`` left as they are)."""
+    return BLOCK.sub(lambda m: m.group(0) if m.group("name") in keep else m.group(1) + block(m.group("name")) + m.group(4),
+                     text)
 
 
 def main(argv: list[str] | None = None) -> int:

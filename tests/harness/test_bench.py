@@ -33,16 +33,6 @@ def test_pareto_front_single_and_dominating_points():
     assert bench.pareto_front([1.0, 1.0], [np.nan, 2.0]).tolist() == [False, True]
 
 
-@pytest.mark.parametrize("knob", bench_run.knobs(quick=True), ids=lambda k: k.name)
-def test_reference_setting_has_zero_error(knob):
-    rows = bench.knob_rows(knob, repeat=1)
-    by_setting = {row["setting"]: row for row in rows}
-    assert by_setting[knob.reference]["reference"]
-    assert by_setting[knob.reference]["error"] == pytest.approx(0.0, abs=1e-15)
-    assert sum(row["reference"] for row in rows) == 1
-    assert any(row["pareto"] for row in rows)
-
-
 def test_a_failed_newton_setting_is_inf_and_off_the_front():
     cap = next(k for k in bench_run.knobs(quick=True) if k.name == "1991 Newton iteration cap")
     rows = {row["setting"]: row for row in bench.knob_rows(cap, repeat=1)}
@@ -78,6 +68,12 @@ def test_quick_bench_writes_its_three_files(tmp_path, monkeypatch):
     assert costs.groupby("subject").engine.apply(lambda e: "limit" in set(e)).all()
     assert (costs.us_per_position > 0).all() and (costs.flops_per_position > 0).all()
     assert knobs.groupby("subject").pareto.any().all()
+    # every knob's reference setting: the one reference of its knob, with zero error
+    assert set(knobs.subject) == {k.name for k in bench_run.knobs(quick=True)}
+    for knob in bench_run.knobs(quick=True):
+        rows = knobs[knobs.subject == knob.name]
+        assert rows.reference.tolist().count(True) == 1 and rows[rows.reference].setting.tolist() == [knob.reference]
+        assert rows[rows.reference].error.iloc[0] == pytest.approx(0.0, abs=1e-15)
     text = (out / "bench.md").read_text()
     printed, last = stdout.getvalue().strip().rsplit("\n", 1)
     assert text.strip() == printed.strip()     # the markdown, then where it went (not a report folder)

@@ -1,5 +1,11 @@
 """The fuzz tool (issue 11, item 3): its runner and classification on calls whose outcome is
-known, and a fast slice of the full run (`make fuzz` runs 10,000 calls).
+known, and a fast slice of the full run (`make fuzz` runs 20,000 calls a seed).
+
+Sizes (``tests/sizes.py``): in ``make test`` the known calls run in two workers with the
+smallest context (``fuzz_known.py``: a worker starts in a fraction of a second, and three are
+replaced), and the slice in one worker with the fuzz's own context; ``make fuzz``
+(``LINKREPRO_FULL_TESTS=1``) runs the known calls in workers with the fuzz's own context and
+the slice in two workers, as the command does.
 
 No verdict here depends on how busy the machine is: a call counts as a hang only after
 PATIENCE seconds (the first call in a worker may compile kernels, slowly on a loaded
@@ -9,7 +15,10 @@ import pytest
 
 from linkrepro.harness import fuzz, fuzz_runner
 from linkrepro.harness.fuzz_calls import Job
+from linkrepro.harness.fuzz_runner import run as run_calls
+from tests.harness import fuzz_known
 from tests.patience import CHILD_SECONDS as PATIENCE
+from tests.sizes import FULL
 
 #: call texts whose outcome the runner must report, and that outcome
 KNOWN = [
@@ -29,9 +38,10 @@ KNOWN = [
 
 
 def test_runner_classifies_known_outcomes():
-    jobs = [Job(i, "known", text, angles=angles, timeout=3.0 if outcome == "hang" else None)
+    jobs = [Job(i, "known", text, angles=angles, timeout=1.0 if outcome == "hang" else None)
             for i, (text, angles, outcome) in enumerate(KNOWN)]
-    results = fuzz.run(jobs, timeout=PATIENCE, workers=2)
+    context = fuzz.CONTEXT if FULL else fuzz_known.REFERENCE
+    results = run_calls(jobs, context, timeout=PATIENCE, workers=2)
     assert [r["outcome"] for r in results] == [outcome for _, _, outcome in KNOWN]
     assert "SIGSEGV" in results[9]["detail"]
 
@@ -44,7 +54,7 @@ def test_same_seed_same_calls():
 
 
 def test_fuzz_slice_has_no_findings():
-    report = fuzz.fuzz(calls=200, seed=0, timeout=PATIENCE)
+    report = fuzz.fuzz(calls=200, seed=0, timeout=PATIENCE, workers=2 if FULL else 1)
     assert len(report.results) == 200
     if report.findings:
         pytest.fail(fuzz_runner.format_findings(report), pytrace=False)

@@ -37,11 +37,15 @@ from pathlib import Path
 import pytest
 
 from linkrepro.harness import register as reg
+from tests import python_c
 from tests.patience import CHILD_SECONDS
 
 ROOT = Path(__file__).resolve().parents[2]
 RAW = reg.REGISTER_PATH.read_text()
 ENTRIES = reg.load()
+#: what the checks' code imports, and pytest (a quoted ``python -m pytest`` collects through ``run_code``):
+#: imported once, before the checks run
+CHECK_IMPORTS = frozenset({"pytest"}).union(*(python_c.imports(c.code) for e in ENTRIES.values() for c in e.checks if c.code))
 SLOW = os.environ.get("LINKREPRO_SLOW_CHECKS", "") not in ("", "0")
 
 #: a repository path: one of the package's top folders, a relative path under it
@@ -179,8 +183,9 @@ def quoted_commands(text: str) -> list[str]:
 
 
 def run_code(code: str) -> subprocess.CompletedProcess:
-    return subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT,
-                          timeout=CHILD_SECONDS)
+    """``python -c code`` in the repository (``tests/python_c.py``: in a child of a server that has
+    imported what every check imports, or with LINKREPRO_FULL_TESTS=1 a fresh interpreter)."""
+    return python_c.run(code, ROOT, CHECK_IMPORTS)
 
 
 def check_problems(check: reg.Check) -> list[str]:
@@ -197,14 +202,22 @@ def check_problems(check: reg.Check) -> list[str]:
     return reg.figures_reproduced(check.figures, out.stdout)
 
 
+@lru_cache(maxsize=None)
+def command_options(name: str) -> tuple[int, frozenset[str]]:
+    """``linkrepro NAME --help``'s exit status and the options it lists (run once a command)."""
+    out = subprocess.run([sys.executable, "-m", "linkrepro", name, "--help"], capture_output=True,
+                         text=True, cwd=ROOT, timeout=CHILD_SECONDS)
+    return out.returncode, frozenset(re.findall(r"--[\w-]+", out.stdout))
+
+
 def command_problems(command: str) -> list[str]:
     """Whether a quoted command can be run as written (its figures are ``check_problems``')."""
     words = shlex.split(command)
     if words[0] in ("python", "python3") and words[1:2] == ["-c"]:
         return [] if len(words) == 3 else [f"{command}: python -c takes one argument"]
     if words[0] in ("python", "python3") and words[1:3] == ["-m", "pytest"]:
-        out = subprocess.run([sys.executable, "-m", "pytest", "--collect-only", "-q", "-p", "no:cacheprovider",
-                              *words[3:]], capture_output=True, text=True, cwd=ROOT, timeout=CHILD_SECONDS)
+        args = ["--collect-only", "-q", "-p", "no:cacheprovider", *words[3:]]
+        out = run_code(f"import sys, pytest; sys.exit(pytest.main({args!r}))")     # python -m pytest ARGS
         selected = re.search(r"(\d+)(?:/\d+)? tests? (?:collected|selected)", out.stdout)
         if out.returncode != 0 or not selected or int(selected.group(1)) == 0:
             return [f"{command}: selects no test ({out.stdout.strip()[-500:]})"]
@@ -217,11 +230,9 @@ def command_problems(command: str) -> list[str]:
     if words[0] == "linkrepro":
         if words[1] not in cli_commands():
             return [f"{command}: linkrepro has no command {words[1]!r} ({', '.join(cli_commands())})"]
-        out = subprocess.run([sys.executable, "-m", "linkrepro", *words[1:2], "--help"], capture_output=True,
-                             text=True, cwd=ROOT, timeout=CHILD_SECONDS)
-        options = set(re.findall(r"--[\w-]+", out.stdout))
+        status, options = command_options(words[1])
         unknown = [w for w in words[2:] if w.startswith("--") and w.split("=")[0] not in options]
-        return [f"{command}: no option {unknown}"] if out.returncode or unknown else []
+        return [f"{command}: no option {unknown}"] if status or unknown else []
     return [f"{command}: not a command of this project"]
 
 
