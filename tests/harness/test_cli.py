@@ -98,27 +98,27 @@ def test_help(via, tmp_path):
 #: legacy/) and scenes
 HEAVY = ("numpy", "pandas", "numba", "llvmlite", "matplotlib", "scipy", "exudyn", "quadprog", "mpmath", "jinja2",
          "PIL", "linkrepro.port", "linkrepro.legacy", "linkrepro.harness.scene", "linkrepro.harness.table_scene")
-#: the modules they may import beyond the standard library their modules are written with: 15
+#: the modules they may import beyond the standard library: 15
 #: today (linkrepro, its errors, the harness, cli, blas_threads, command, lazy, the registry, the
 #: three theses' packages, and the two theses' commands modules with their settings); room for a
 #: thesis more with a command (three) and a light module or two, while any engine library
 #: brings a hundred
 LIGHT_MODULES = 20
-#: a fresh interpreter: the modules the standard library of the CLI's light modules adds (and
-#: argparse's formatter, textwrap), then those that ``main(arguments)`` adds beyond them
+#: a fresh interpreter: the modules ``main(arguments)`` imports, and those of them beyond the
+#: standard library (``sys.stdlib_module_names``: which of its modules load depends on the install,
+#: e.g. an editable one's import hook loads shutil at start-up, a wheel's argparse later)
 _IMPORTS = """
 import contextlib, io, json, sys
 before = set(sys.modules)
-import __future__, argparse, dataclasses, difflib, functools, importlib, math, os, pathlib, pkgutil, textwrap, typing
-standard = set(sys.modules)
 from linkrepro.harness.cli import main
 with contextlib.redirect_stdout(io.StringIO()):
     try:
         status = main(sys.argv[1:])
     except SystemExit as exc:
         status = exc.code
-print(json.dumps({"status": status, "new": sorted(set(sys.modules) - before),
-                  "beyond": sorted(set(sys.modules) - standard)}))
+new = sorted(set(sys.modules) - before)
+print(json.dumps({"status": status, "new": new,
+                  "beyond": [name for name in new if name.partition(".")[0] not in sys.stdlib_module_names]}))
 """
 
 
