@@ -94,13 +94,13 @@ def _parser() -> tuple[_Parser, dict[str, _Parser], dict]:
     explain.add_argument("--out", default=Path("out"), type=_out_folder,
                          help="a run's output folder to read the scene's diff from (default: out/)")
     explain.add_argument("--run", action="store_true",
-                         help="where --out holds no run of the scene, run its engines now (seconds to a minute) "
-                              "instead of stopping with an error")
+                         help="where --out holds no run of the scene, run its engines now (as `reproduce SCENE` "
+                              "does) instead of stopping with an error")
     bench = sub.add_parser("bench", help="time each engine against its error: cost per position against "
                            "legacy and a flop-count limit, and speed against error for each knob")
     bench.add_argument("--repeat", type=_repeat, default=None,
-                       help=f"timing repetitions, >= 1 (best of; default {BENCH_REPEAT}, 20 to 40 s; "
-                            f"{QUICK_REPEAT} with --quick)")
+                       help=f"timing repetitions, >= 1 (best of; default {BENCH_REPEAT}, {QUICK_REPEAT} with --quick; "
+                            "bench.md says how long its run took)")
     bench.add_argument("--out", default=Path("out/bench"), type=_out_folder,
                        help="output folder for bench.md, bench.png, bench.csv (default: out/bench/)")
     bench.add_argument("--quick", action="store_true",
