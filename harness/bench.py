@@ -254,8 +254,11 @@ def knob_tables(rows: pd.DataFrame, descriptions: dict[str, str]) -> list[str]:
     return lines
 
 
-def markdown(frame: pd.DataFrame, descriptions: dict[str, str], repeat: int, elapsed: float, png: str) -> str:
-    """bench.md: the cost table, the figure, the knobs' tables."""
+def markdown(frame: pd.DataFrame, descriptions: dict[str, str], repeat: int, elapsed: float, png: str,
+             warned: dict[tuple[str, str], int] | None = None) -> str:
+    """bench.md: the cost table, the figure, the knobs' tables, and the warnings the engines gave
+    (``warned``: (category, message): times; a bench computes settings near the listings' limits,
+    where an engine says its answer keeps fewer digits)."""
     lines = ["# linkrepro bench", "",
              f"{'One call' if repeat == 1 else f'Best of {repeat} calls'} each (time.perf_counter; the port's "
              "caches cleared before each call), all "
@@ -274,6 +277,12 @@ def markdown(frame: pd.DataFrame, descriptions: dict[str, str], repeat: int, ela
               "Pareto front marked; its caption tells the others.", "",
               f"![error against time]({png})", ""]
     lines += knob_tables(frame[frame.kind == "knob"], descriptions)
+    if warned:
+        lines += ["", "## Warnings the engines gave", "",
+                  "Every distinct warning of the run (its category, how many times it was given, its words): "
+                  "the times above include the calls that warned.", ""]
+        lines += [f"- `{category}` ({times} time{'s' * (times != 1)}): {prose(message)}"
+                  for (category, message), times in sorted(warned.items())]
     return "\n".join(lines) + "\n"
 
 

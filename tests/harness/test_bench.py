@@ -8,6 +8,7 @@ from __future__ import annotations
 import contextlib
 import io
 import json
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -130,3 +131,23 @@ def test_the_figure_labels_every_setting_of_a_crowded_knob(tmp_path):
     assert "crowded: L = 6, L = 9, L = 12, L = 18, L = 24, L = 36, L = 72" in caption
     assert "left out" not in caption and caption.endswith('Without a panel: two: double error 0 (1 ms), REAL*4 '
                                                           'error 1e-07 in (1 ms).')
+
+
+def test_an_engine_s_warnings_are_in_bench_md_not_on_stderr(tmp_path, monkeypatch, capsys):
+    """A computation whose engine warns (the bench times settings near the listings' limits):
+    bench.md lists each distinct warning with how many times it was given; stderr stays clean."""
+    from linkrepro.errors import PrecisionWarning
+
+    def warns():
+        warnings.warn("KED1S: fewer digits at input angle 143.7 deg (REAL*4)", PrecisionWarning)
+        return np.ones(3)
+    comp = bench.Computation("a warning computation", 3, {"legacy": warns, "port_printed": lambda: np.ones(3)},
+                             lambda _: 1.0)
+    monkeypatch.setattr(bench_run, "computations", lambda quick: [comp])
+    monkeypatch.setattr(bench_run, "knobs", lambda quick: [])
+    monkeypatch.setattr(bench_run, "sweeps", lambda quick: [])
+    monkeypatch.setattr(bench_run, "plot", lambda *args: None)
+    text = bench_run.run_bench(repeat=2, out=tmp_path)
+    assert "PrecisionWarning" not in capsys.readouterr().err
+    # the warm-up call and two timed calls; the words as written (REAL*4's asterisk kept)
+    assert "- `PrecisionWarning` (3 times): KED1S: fewer digits at input angle 143.7 deg (REAL\\*4)" in text
