@@ -8,7 +8,7 @@ edit to a callee would leave the caller's old machine code in use: a wrong numbe
 
 So ``configure`` (called by ``linkrepro.port`` before any of its modules imports numba) sets
 ``NUMBA_CACHE_DIR`` to ``<root>/linkrepro-<key>``, ``key`` the SHA-256 of every ``.py`` file of
-the port and of the package's top modules (their paths and bytes, about 0.3 MB): any edit gives
+the port and of the package's top modules (their paths and bytes): any edit gives
 a new folder, and every kernel compiles anew there.  ``root`` is ``$XDG_CACHE_HOME/linkrepro/numba``
 (``~/.cache/linkrepro/numba`` when XDG_CACHE_HOME is not set or not absolute), never the
 installation's folder (which may be read-only); a ``NUMBA_CACHE_DIR`` of the user's is the root

@@ -113,9 +113,9 @@ def test_the_folder_is_keyed_and_placed(tmp_path, monkeypatch):
 
 def test_prune_keeps_the_recently_used(tmp_path):
     """Of seven keyed folders (and a folder of another name), the four most recently used stay,
-    and one used within the idle time; the two idle oldest go."""
+    and one more used within a day; the two unused for two and three days go."""
     now = time.time()
-    ages = [0, 10, 20, 30, 100, 5000, 6000]                          # seconds since last use
+    ages = [0, 10, 20, 30, 3600, 2 * 86400, 3 * 86400]               # seconds since last use
     folders = [tmp_path / f"{nc.PREFIX}{i:016x}" for i in range(len(ages))]
     for folder, age in zip(folders, ages):
         folder.mkdir()
@@ -123,6 +123,5 @@ def test_prune_keeps_the_recently_used(tmp_path):
         os.utime(folder, (now - age, now - age))
     (tmp_path / "other").mkdir()
     os.utime(tmp_path / "other", (now - 10 ** 6, now - 10 ** 6))
-    removed = nc.prune(tmp_path, keep=4, idle_s=1000.0)
-    assert sorted(removed) == folders[5:]
+    assert sorted(nc.prune(tmp_path)) == folders[5:]
     assert sorted(p.name for p in tmp_path.iterdir()) == sorted([f.name for f in folders[:5]] + ["other"])
