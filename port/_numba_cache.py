@@ -66,8 +66,12 @@ def roots() -> list[Path]:
         first = Path(current)                         # the user's own
     else:
         xdg = os.environ.get("XDG_CACHE_HOME", "")
-        first = (Path(xdg) if os.path.isabs(xdg) else Path.home() / ".cache") / "linkrepro" / "numba"
-    return [first, Path(tempfile.gettempdir()) / f"{PREFIX}numba-{os.getuid() if hasattr(os, 'getuid') else 0}"]
+        try:
+            first = (Path(xdg) if os.path.isabs(xdg) else Path.home() / ".cache") / "linkrepro" / "numba"
+        except (RuntimeError, KeyError):              # no home folder: the fallback alone
+            first = None
+    fallback = Path(tempfile.gettempdir()) / f"{PREFIX}numba-{os.getuid() if hasattr(os, 'getuid') else 0}"
+    return [root for root in (first, fallback) if root is not None]
 
 
 def prune(root: Path, keep: int = KEEP, idle_s: float = IDLE_S) -> list[Path]:
