@@ -35,7 +35,7 @@ ENV = "NUMBA_CACHE_DIR"
 OURS = "LINKREPRO_NUMBA_CACHE_DIR"
 PREFIX = "linkrepro-"
 KEY_LEN = 16                   # hex digits of the SHA-256 kept in a folder's name
-KEEP, IDLE_S = 4, 86400.0      # folders kept, and seconds since its last use that keep one more
+KEEP, IDLE_S = 4, 3600.0       # folders kept, and seconds since its last use that keep one more
 _OURS_NAME = re.compile(re.escape(PREFIX) + f"[0-9a-f]{{{KEY_LEN}}}")
 
 

@@ -75,6 +75,7 @@ def test_an_edit_to_a_callee_recompiles_its_caller(tmp_path):
     after, second = _caller(tmp_path / "copy", cache_home)
     assert second != first and second.parent == first.parent
     assert after == before + 1.0
+    assert not list(package.rglob("*.nb[ic]")), "a kernel cached beside its module (a read-only install cannot)"
 
 
 def test_the_folder_is_keyed_and_placed(tmp_path, monkeypatch):
@@ -113,9 +114,9 @@ def test_the_folder_is_keyed_and_placed(tmp_path, monkeypatch):
 
 def test_prune_keeps_the_recently_used(tmp_path):
     """Of seven keyed folders (and a folder of another name), the four most recently used stay,
-    and one more used within a day; the two unused for two and three days go."""
+    and one more used within the hour; the two unused for two and three hours go."""
     now = time.time()
-    ages = [0, 10, 20, 30, 3600, 2 * 86400, 3 * 86400]               # seconds since last use
+    ages = [0, 10, 20, 30, 600, 2 * 3600, 3 * 3600]               # seconds since last use
     folders = [tmp_path / f"{nc.PREFIX}{i:016x}" for i in range(len(ages))]
     for folder, age in zip(folders, ages):
         folder.mkdir()
