@@ -9,4 +9,10 @@ kernel and exact kinematics).
 
 Each thesis's quirk set turns its listings' bugs on (``PRINTED``: the port reproduces the
 legacy FORTRAN) or off (``CORRECTED``: what the thesis meant), one named switch per bug.
+
+Importing it sets numba's cache folder (``_numba_cache``: a folder named by the port's source, so
+that an edit to any kernel compiles every kernel anew) before any of its modules imports numba.
 """
+from . import _numba_cache
+
+_numba_cache.configure()

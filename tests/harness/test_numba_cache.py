@@ -109,7 +109,8 @@ def _caches(call: ast.Call) -> bool:
 
 def _run_many(workload: str, cache_dir: pathlib.Path | None, processes: int) -> list[str]:
     """Start ``processes`` interpreters on ``workload`` at once with numba's cache in ``cache_dir``
-    (None: where the installation keeps it)."""
+    (in its folder keyed by the port's source, ``port/_numba_cache.py``; None: linkrepro's own
+    folder in the user's cache)."""
     env = {k: v for k, v in os.environ.items() if k != "NUMBA_CACHE_DIR"}
     if cache_dir is not None:
         env["NUMBA_CACHE_DIR"] = str(cache_dir)
