@@ -19,8 +19,10 @@ test: $(VENV)/.installed
 	$(BIN)/linkrepro reproduce --out out/verify --without ali1977-elastodynamics > /dev/null
 	$(BIN)/linkrepro verify --out out/verify
 
-# An sdist and a wheel of what git has committed (python -m build), each installed into a fresh
-# venv and run from outside the checkout (one build, serially: a few minutes; CI runs it after `make test`).
+# An sdist and a wheel of what git has committed (python -m build), the wheel repaired with auditwheel
+# (gfortran's runtime copied in; the tools are pyproject's `packaging` extra, installed by the test into a
+# venv of its own), each installed into a fresh venv and run from outside the checkout, the wheel where
+# the system's libgfortran and gfortran are hidden (one build, serially: a few minutes; CI runs it after `make test`).
 packaging: $(VENV)/.installed
 	LINKREPRO_CHECK_PACKAGING=1 $(BIN)/python -m pytest -q tests/harness/test_packaging.py
 
