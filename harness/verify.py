@@ -124,6 +124,23 @@ def _numbers(column: pd.Series) -> np.ndarray | None:
         return None
 
 
+def column_units(ref: pd.Series, run: pd.Series) -> np.ndarray:
+    """Per cell of a column (text cells), how far the run's number is from the reference's, in
+    units in the last place (ulps of a double where the reference writes the column in full, else
+    units of its last written digit); inf where either is not a finite number.  (Identical text
+    may still show 0 or a NaN: compare the text first.)"""
+    a = ref.to_numpy(str)
+    x, y = _numbers(ref), _numbers(run)
+    if x is None or y is None:
+        return np.full(len(a), np.inf)
+    digits = max(printed_digits(t) for t in a if t != "") if (a != "").any() else 1
+    scale = np.fmax(np.abs(x), np.abs(y))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        unit = (np.spacing(scale) if digits >= FULL_DIGITS        # written in full: ulps
+                else 10.0 ** (np.floor(np.log10(scale)) - digits + 1))
+        return np.where(np.isfinite(x) & np.isfinite(y), np.abs(x - y) / unit, np.inf)
+
+
 def compare_frames(name: str, ref: pd.DataFrame, run: pd.DataFrame, allowed: float) -> FileResult:
     """Cell by cell (see the module's docstring); ``allowed``: units of the last digit a number may move."""
     result = FileResult(name)
@@ -142,15 +159,7 @@ def compare_frames(name: str, ref: pd.DataFrame, run: pd.DataFrame, allowed: flo
             result.status_changed += int((~same).sum())
             result.examples += [(int(i), column, str(a[i]), str(b[i]), math.nan) for i in np.flatnonzero(~same)[:EXAMPLES]]
             continue
-        x, y = _numbers(ref[column]), _numbers(run[column])
-        units = np.full(len(a), np.inf)
-        if x is not None and y is not None:
-            digits = max(printed_digits(t) for t in a if t != "") if (a != "").any() else 1
-            scale = np.fmax(np.abs(x), np.abs(y))
-            with np.errstate(divide="ignore", invalid="ignore"):
-                unit = (np.spacing(scale) if digits >= FULL_DIGITS        # written in full: ulps
-                        else 10.0 ** (np.floor(np.log10(scale)) - digits + 1))
-                units = np.where(np.isfinite(x) & np.isfinite(y), np.abs(x - y) / unit, np.inf)
+        units = column_units(ref[column], run[column])
         for i in np.flatnonzero(~same):
             if units[i] <= allowed * (1 + 1e-6):      # (a difference of decimals, computed in binary)
                 result.within += 1
