@@ -49,7 +49,7 @@ fuzz: $(VENV)/.installed
 
 # the run of record under each Fortran compiler (harness/toolchains.py: gfortran-11, gfortran-12, flang-22,
 # from Debian's packages if missing): the package built by each into out/toolchains/<name>/ (its own venv),
-# every scene run and verified against reference/, and the matrix of every cell written to docs/toolchains/
+# every scene run and verified against reference/, and the matrix of every cell written to reference/toolchains/
 # (commit it). Its own target, not part of `make test` (a few minutes).
 TOOLCHAINS ?= gfortran-11 gfortran-12 flang-22
 toolchains: $(VENV)/.installed

@@ -16,7 +16,7 @@ if a page differs from what it would write, and say where).  The blocks:
 - ``model assumptions NAME ...``: the register's model assumptions (kind ``model-assumption``)
   whose ``scenes`` hold a scene NAME, or a scene of the thesis NAME, with their effect;
 - ``toolchains``: the measured matrix of the run across toolchains, per toolchain and engine
-  (``harness/toolchains.py``, from the committed ``docs/toolchains/matrix.csv``);
+  (``harness/toolchains.py``, from the committed ``reference/toolchains/matrix.csv``);
 - a thesis's own blocks (``BLOCKS`` of its ``harness/scenes/<thesis>/docs.py``, found through
   the registry): ``differential``, the CSSP's fixed sample of the port against legacy.
 

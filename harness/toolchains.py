@@ -21,13 +21,14 @@ or a scene's summary), with its cells identical as written, within k units in th
 (``verify.column_units``: ulps where written in full, else units of the last written digit) for
 k in ``BINS``, beyond, not a number where the reference has one (or text changed), and the
 status changes of diff.csv; the largest movement and its cell.  ``--commit`` copies both to
-the source tree's ``docs/toolchains/``, which ``docs/developing.md``'s block ``toolchains`` summarises.
+the source tree's ``reference/toolchains/`` (verify's measured bounds), which ``docs/developing.md``'s block ``toolchains`` summarises.
 
 Usage: ``python -m linkrepro.harness.toolchains [--only NAME ...] [--matrix-only] [--commit]``.
 """
 from __future__ import annotations
 
 import argparse
+import json
 import lzma
 import os
 import shutil
@@ -41,24 +42,18 @@ import pandas as pd
 
 from .compare_runs import is_timing
 from .readings import FC_ENV, first_error
-from .verify import REFERENCE_DIR, STATUS_COLUMN, STATUS_FILE, SUFFIX, column_units, read_csv_text, reference_scenes
+from .verify import (MATRIX, REFERENCE_DIR, STATUS_COLUMN, SUFFIX, column_units, engine_of, read_csv_text,
+                     reference_scenes)
 
 #: name: the compiler meson is given (FC); gfortran-12 is Debian 12's gfortran, the reference's
 TOOLCHAINS = {"gfortran-11": "gfortran-11", "gfortran-12": "gfortran-12", "flang-22": "flang-22"}
-#: where the committed matrix is, in the source tree this module runs from (an editable install's)
-COMMITTED = REFERENCE_DIR.parent / "docs" / "toolchains"
+#: where the committed matrix is: with the reference it measures (verify reads its bounds there)
+COMMITTED = (REFERENCE_DIR / MATRIX).parent
 #: upper ends of the bins of units in the last place (a cell in the first bin it fits)
 BINS = (1, 2, 4, 16, 1024)
-ENGINES = ("legacy", "printed", "port_printed", "port_corrected", "port")
 COLUMNS = ("toolchain", "scene", "file", "engine", "cells", "identical",
            *[f"within_{k}" for k in BINS], "beyond", "not_a_number", "status_changed",
-           "max_units", "max_row", "max_column", "max_reference", "max_run", "built")
-
-
-def engine_of(path: str) -> str:
-    """The engine a reference CSV is written by (``legacy.csv``: legacy), ``diff`` or ``summary``."""
-    stem = Path(path).stem
-    return stem if stem in ENGINES else ("diff" if stem == Path(STATUS_FILE).stem else "summary")
+           "max_units", "max_row", "max_column", "max_reference", "max_run", "built", "compiler")
 
 
 def compare_file(ref: pd.DataFrame, run: pd.DataFrame | None) -> dict:
@@ -79,11 +74,12 @@ def compare_file(ref: pd.DataFrame, run: pd.DataFrame | None) -> dict:
             continue
         if column == STATUS_COLUMN:
             row["status_changed"] += int(differ.sum())
+            continue
         units = column_units(ref[column], run[column])
         for i in np.flatnonzero(differ):
             u = float(units[i])
             if not np.isfinite(u):
-                row["not_a_number"] += column != STATUS_COLUMN
+                row["not_a_number"] += 1
             else:
                 row[next((f"within_{k}" for k in BINS if u <= k * (1 + 1e-6)), "beyond")] += 1
             if np.isfinite(u) and u > row["max_units"] or not np.isfinite(u) and np.isfinite(row["max_units"]):
@@ -96,6 +92,8 @@ def measure(out: Path, reference: Path = REFERENCE_DIR, names: list[str] | None 
     rows = []
     for name in names or list(TOOLCHAINS):
         built = (out / name / "built").read_text().strip() if (out / name / "built").is_file() else "not built"
+        record = out / name / "run" / "manifest.json"
+        compiler = json.loads(record.read_text()).get("build_gfortran", "") if record.is_file() else ""
         for scene in reference_scenes(reference):
             for stored in sorted((reference / scene).glob(f"*{SUFFIX}")):
                 file = stored.name[:-len(SUFFIX)] + ".csv"
@@ -103,7 +101,7 @@ def measure(out: Path, reference: Path = REFERENCE_DIR, names: list[str] | None 
                 path = out / name / "run" / scene / file
                 run = read_csv_text(path.read_bytes()) if path.is_file() else None
                 rows.append({"toolchain": name, "scene": scene, "file": file, "engine": engine_of(file),
-                             **compare_file(ref, run), "built": built})
+                             **compare_file(ref, run), "built": built, "compiler": compiler})
     return pd.DataFrame(rows, columns=list(COLUMNS))
 
 
@@ -122,6 +120,15 @@ def as_markdown(matrix: pd.DataFrame) -> str:
                      + f" | {where} |")
     built = matrix.drop_duplicates("toolchain")[["toolchain", "built"]]
     lines += ["", *[f"- {r.toolchain}: {r.built}" for r in built.itertuples()]]
+    ran = matrix[matrix["built"].str.startswith("built with")]
+    fixed = ran.groupby(["scene", "file"]).filter(lambda part: (part["identical"] == part["cells"]).all())
+    fixed = fixed.drop_duplicates(["scene", "file"])
+    files = ran.drop_duplicates(["scene", "file"])
+    lines.append(f"- unmoved by every toolchain that ran ({', '.join(ran['toolchain'].unique())}): "
+                 f"{len(fixed)} of {len(files)} CSVs of the reference, {int(fixed['cells'].sum())} of "
+                 f"{int(files['cells'].sum())} cells, the ones an archival test may hold fixed"
+                 + ("" if len(fixed) == len(files) else ": all but "
+                    + ", ".join(sorted(set(files["scene"] + "/" + files["file"]) - set(fixed["scene"] + "/" + fixed["file"])))))
     return "\n".join(lines) + "\n"
 
 
@@ -178,7 +185,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--only", nargs="*", choices=list(TOOLCHAINS), help="these toolchains (default: all)")
     parser.add_argument("--matrix-only", action="store_true", help="measure the runs already under --out")
     parser.add_argument("--source", type=Path, default=Path.cwd(), help="the source tree to build (default: here)")
-    parser.add_argument("--commit", action="store_true", help="copy matrix.csv and matrix.md to SOURCE/docs/toolchains/")
+    parser.add_argument("--commit", action="store_true", help="copy matrix.csv and matrix.md to SOURCE/reference/toolchains/")
     args = parser.parse_args(argv)
     names = args.only or list(TOOLCHAINS)
     if not (args.source / "meson.build").is_file():
@@ -191,7 +198,7 @@ def main(argv: list[str] | None = None) -> int:
     (args.out / "matrix.md").write_text(as_markdown(matrix))
     print(as_markdown(matrix))
     if args.commit:
-        committed = args.source / "docs" / "toolchains"
+        committed = args.source / "reference" / MATRIX.parent
         committed.mkdir(parents=True, exist_ok=True)
         for file in ("matrix.csv", "matrix.md"):
             shutil.copyfile(args.out / file, committed / file)
