@@ -13,7 +13,8 @@ readings edit), ``tables_of(file)`` (the published tables a file's readings are 
 the listings are not at hand) and ``as_markdown(frame)``.  Here: the register's readings,
 putting a reading back, finding gfortran, and the driver-independent parts of the report.
 
-Needs gfortran on PATH: without it ``measure`` raises ``CompilerError``; ``linkrepro
+Needs the run-time compiler on PATH (``COMPILER``: ``$LINKREPRO_FC``, else gfortran; its family's
+flags, ``FLAGS``, as meson.build gives the legacy build): without it ``measure`` raises ``CompilerError``; ``linkrepro
 reproduce`` checks for it before the run starts (``require_compiler``) and skips the
 measurement only when asked to (``--skip-readings``).  Without the source tree's listings it
 is skipped, and the report says so.
