@@ -11,6 +11,8 @@ Per toolchain (``TOOLCHAINS``: a name and the compiler meson is given as ``FC``)
 - ``venv/``: a venv holding that wheel alone, which finds every other dependency in the running
   interpreter's site-packages (a ``.pth`` path line: that environment's own ``.pth`` files, an
   editable install's loader among them, are not read, so ``linkrepro`` is the wheel's);
+- ``arithmetic/``: ``linkrepro arithmetic --out`` (the CSSP under the arithmetics of 1996 machines:
+  their x87 and FMA variants are gfortran's flags, which another compiler may not take);
 - ``run/``: ``linkrepro reproduce --out`` of every scene, run by that venv with
   ``LINKREPRO_FC`` set to the compiler (the listings the harness rebuilds at run time use it
   too); ``reproduce.log``, and ``verify.txt``: ``linkrepro verify`` against the reference.
@@ -20,7 +22,8 @@ reference (a CSV is an engine's: legacy, printed, port_printed, port_corrected, 
 or a scene's summary), with its cells identical as written, within k units in the last place
 (``verify.column_units``: ulps where written in full, else units of the last written digit) for
 k in ``BINS``, beyond, not a number where the reference has one (or text changed), and the
-status changes of diff.csv; the largest movement and its cell.  ``--commit`` copies both to
+status changes of diff.csv; the largest movement and its cell.  The arithmetic study, which
+reference/ does not hold, is measured against the ``BASELINE`` toolchain's run: one row per variant.  ``--commit`` copies both to
 the source tree's ``reference/toolchains/`` (verify's measured bounds), which ``docs/developing.md``'s block ``toolchains`` summarises.
 
 Usage: ``python -m linkrepro.harness.toolchains [--only NAME ...] [--matrix-only] [--commit]``.
@@ -49,6 +52,8 @@ from .verify import (MATRIX, REFERENCE_DIR, STATUS_COLUMN, SUFFIX, column_units,
 TOOLCHAINS = {"gfortran-11": "gfortran-11", "gfortran-12": "gfortran-12", "flang-22": "flang-22"}
 #: where the committed matrix is: with the reference it measures (verify reads its bounds there)
 COMMITTED = (REFERENCE_DIR / MATRIX).parent
+#: the arithmetic study's rows are measured against this toolchain's own run (reference/ holds none)
+BASELINE, ARITHMETIC = "gfortran-12", "arithmetic_cells.csv"
 #: upper ends of the bins of units in the last place (a cell in the first bin it fits)
 BINS = (1, 2, 4, 16, 1024)
 COLUMNS = ("toolchain", "scene", "file", "engine", "cells", "identical",
@@ -102,7 +107,23 @@ def measure(out: Path, reference: Path = REFERENCE_DIR, names: list[str] | None 
                 run = read_csv_text(path.read_bytes()) if path.is_file() else None
                 rows.append({"toolchain": name, "scene": scene, "file": file, "engine": engine_of(file),
                              **compare_file(ref, run), "built": built, "compiler": compiler})
+        rows += [{**row, "toolchain": name, "built": built, "compiler": compiler} for row in _arithmetic(out, name)]
     return pd.DataFrame(rows, columns=list(COLUMNS))
+
+
+def _arithmetic(out: Path, name: str) -> list[dict]:
+    """The arithmetic study's values (``linkrepro arithmetic``: the CSSP under each arithmetic
+    variant, ``arithmetic_cells.csv``) of toolchain ``name`` against ``BASELINE``'s, one row per
+    variant (engine ``arithmetic``; a variant this toolchain did not build: every cell NaN/text)."""
+    base, own = (out / n / "arithmetic" / ARITHMETIC for n in (BASELINE, name))
+    if name == BASELINE or not base.is_file() or not own.is_file():
+        return []
+    ref, run = read_csv_text(base.read_bytes()), read_csv_text(own.read_bytes())
+    rows = []
+    for column in [c for c in ref.columns if c.startswith("value:")]:
+        row = compare_file(ref[[column]], run[[column]] if column in run.columns else None)
+        rows.append({"scene": "arithmetic", "file": f"{ARITHMETIC}[{column}]", "engine": "arithmetic", **row})
+    return rows
 
 
 def as_markdown(matrix: pd.DataFrame) -> str:
@@ -120,7 +141,10 @@ def as_markdown(matrix: pd.DataFrame) -> str:
                      + f" | {where} |")
     built = matrix.drop_duplicates("toolchain")[["toolchain", "built"]]
     lines += ["", *[f"- {r.toolchain}: {r.built}" for r in built.itertuples()]]
-    ran = matrix[matrix["built"].str.startswith("built with")]
+    unbuilt = matrix[(matrix["scene"] == "arithmetic") & (matrix["not_a_number"] == matrix["cells"])]
+    lines += [f"- {name}: arithmetic variants not built (gfortran's flags): "
+              + ", ".join(f.split("[value:")[1].rstrip("]") for f in part["file"]) for name, part in unbuilt.groupby("toolchain", sort=False)]
+    ran = matrix[matrix["built"].str.startswith("built with") & (matrix["scene"] != "arithmetic")]
     fixed = ran.groupby(["scene", "file"]).filter(lambda part: (part["identical"] == part["cells"]).all())
     fixed = fixed.drop_duplicates(["scene", "file"])
     files = ran.drop_duplicates(["scene", "file"])
@@ -172,6 +196,8 @@ def build_and_run(name: str, out: Path, source: Path) -> str:
     env = {**os.environ, FC_ENV: fc}
     run_error = _step([str(python), "-m", "linkrepro", "reproduce", "--out", str(where / "run")],
                       where / "reproduce.log", env)
+    _step([str(python), "-m", "linkrepro", "arithmetic", "--out", str(where / "arithmetic")],
+          where / "arithmetic.log", env)
     _step([str(python), "-m", "linkrepro", "verify", "--out", str(where / "run"), "--reference", str(REFERENCE_DIR)],
           where / "verify.txt", env)
     said = f"built with {fc}" + (f"; the run stopped: {run_error}" if run_error else "")

@@ -54,7 +54,7 @@ def test_the_committed_matrix_covers_every_csv_of_the_reference(committed):
     wanted = {(scene, p.name[:-len(SUFFIX)] + ".csv") for scene in reference_scenes(REFERENCE_DIR)
               for p in (REFERENCE_DIR / scene).glob(f"*{SUFFIX}")}
     assert set(committed["toolchain"]) == set(toolchains.TOOLCHAINS)
-    for name, part in committed.groupby("toolchain"):
+    for name, part in committed[committed["scene"] != "arithmetic"].groupby("toolchain"):
         assert set(zip(part["scene"], part["file"])) == wanted, name
     counts = committed[["identical", *[f"within_{k}" for k in toolchains.BINS], "beyond", "not_a_number",
                         "status_changed"]].astype(int)
