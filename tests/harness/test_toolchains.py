@@ -3,11 +3,15 @@ number of ulps, and the committed matrix (reference/toolchains/matrix.csv, made 
 covering every CSV of every scene of reference/ for every toolchain, with the port unmoved."""
 from __future__ import annotations
 
+import os
+import subprocess
+import sys
+
 import numpy as np
 import pandas as pd
 import pytest
 
-from linkrepro.harness import toolchains
+from linkrepro.harness import readings, toolchains
 from linkrepro.harness.verify import REFERENCE_DIR, SUFFIX, reference_scenes
 
 COMMITTED = toolchains.COMMITTED / "matrix.csv"
@@ -66,3 +70,21 @@ def test_the_port_does_not_move_under_any_toolchain(committed):
     built = committed[committed["built"].str.startswith("built with")]
     port = built[built["engine"].str.startswith("port")]
     assert len(port) and (port["identical"] == port["cells"]).all()
+
+
+def test_a_compiler_that_is_not_there_is_said_and_not_run(tmp_path, monkeypatch):
+    monkeypatch.setitem(toolchains.TOOLCHAINS, "absent", "no-such-fortran-35")
+    said = toolchains.build_and_run("absent", tmp_path, REFERENCE_DIR.parent)
+    assert said == "not built: no-such-fortran-35 is not on PATH (apt-get install no-such-fortran-35)"
+    matrix = toolchains.measure(tmp_path, REFERENCE_DIR, ["absent"])
+    assert (matrix["built"] == said).all() and (matrix["not_a_number"] == matrix["cells"]).all()
+    assert f"- absent: {said}" in toolchains.as_markdown(matrix)
+
+
+def test_the_run_time_compiler_and_its_flags_follow_linkrepro_fc():
+    code = "from linkrepro.harness import readings as r; print(r.COMPILER, ' '.join(r.FLAGS))"
+    for fc, family in (("flang-22", "flang"), ("gfortran-11", "gfortran"), ("", "gfortran")):
+        out = subprocess.run([sys.executable, "-c", code], env={**os.environ, "LINKREPRO_FC": fc},
+                             capture_output=True, text=True, check=True).stdout.split()
+        flags = [f for f in readings.LEGACY_FLAGS[family] if f != "-fallow-argument-mismatch"]
+        assert out == [fc or "gfortran", *flags]
