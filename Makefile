@@ -5,7 +5,7 @@ VENV   := .venv
 BIN    := $(VENV)/bin
 SOURCES := pyproject.toml meson.build $(shell find legacy port harness package -type f -not -name '*.pyc' 2>/dev/null)
 
-.PHONY: reproduce test packaging bench fuzz setup clean
+.PHONY: reproduce test packaging bench fuzz toolchains setup clean
 
 reproduce: $(VENV)/.installed
 	$(BIN)/linkrepro arithmetic --out out/arithmetic > /dev/null
@@ -48,6 +48,19 @@ fuzz: $(VENV)/.installed
 	LINKREPRO_FULL_TESTS=1 $(BIN)/python -m pytest -q -n auto tests/harness/test_fuzz.py tests/harness/test_docs.py \
 	  tests/test_python_c.py
 	LINKREPRO_FULL_NUMBA_RACE=1 $(BIN)/python -m pytest -q tests/harness/test_numba_cache.py
+
+# the run of record under each Fortran compiler (harness/toolchains.py: gfortran-11, gfortran-12, flang-22,
+# from Debian's packages if missing): the package built by each into out/toolchains/<name>/ (its own venv),
+# every scene run and verified against reference/, and the matrix of every cell written to reference/toolchains/
+# (commit it). Its own target, not part of `make test` (a few minutes).
+TOOLCHAINS ?= gfortran-11 gfortran-12 flang-22
+toolchains: $(VENV)/.installed
+	@for fc in $(TOOLCHAINS); do command -v $$fc >/dev/null 2>&1 || { \
+	  echo "$$fc not found: installing it from Debian's packages"; \
+	  SUDO=$$( [ "$$(id -u)" = 0 ] || echo sudo ); \
+	  $$SUDO apt-get update -qq && $$SUDO apt-get install -y -qq $$fc || echo "$$fc could not be installed"; }; done
+	$(BIN)/python -m pip install -q "meson-python>=0.18" "meson>=1.1" ninja
+	$(BIN)/python -m linkrepro.harness.toolchains --out out/toolchains --only $(TOOLCHAINS) --commit
 
 setup: $(VENV)/.installed
 

@@ -112,9 +112,11 @@ def _parser() -> tuple[_Parser, dict[str, _Parser], dict]:
     verify.add_argument("--out", default=Path("out"), type=_out_folder, help="the run's output folder (default: out/)")
     verify.add_argument("--reference", type=Path, default=None,
                         help="the run of record (default: the reference/ the package carries)")
-    verify.add_argument("--units", type=float, default=4.0,
+    verify.add_argument("--units", type=float, default=None,
                         help="across toolchains, units in the last place a number may move: ulps where it is "
-                             "written in full, else units of its last written digit (default 4)")
+                             "written in full, else units of its last written digit (default: as far as the "
+                             "reference's measured matrix saw another compiler move each engine, where it measured "
+                             "the run's compiler; else 4)")
     verify.add_argument("--refresh", action="store_true",
                         help="print the comparison, then make --out's scenes the reference")
     subparsers = {"reproduce": rep, "scenes": scenes, "explain": explain, "bench": bench, "verify": verify,
@@ -289,7 +291,7 @@ def _verify(args: argparse.Namespace) -> int:
     first, then replaces the reference."""
     from .verify import REFERENCE_DIR, VerifyError, describe, refresh, verify
     reference = args.reference or REFERENCE_DIR
-    if not math.isfinite(args.units) or args.units < 0:
+    if args.units is not None and (not math.isfinite(args.units) or args.units < 0):
         _error("--units must be a number >= 0")
         return 2
     try:

@@ -15,6 +15,8 @@ if a page differs from what it would write, and say where).  The blocks:
 - ``explain``: ``linkrepro explain ali1977-table1 160 src_dx`` as it prints (its first lines);
 - ``model assumptions NAME ...``: the register's model assumptions (kind ``model-assumption``)
   whose ``scenes`` hold a scene NAME, or a scene of the thesis NAME, with their effect;
+- ``toolchains``: the measured matrix of the run across toolchains, per toolchain and engine
+  (``harness/toolchains.py``, from the committed ``reference/toolchains/matrix.csv``);
 - a thesis's own blocks (``BLOCKS`` of its ``harness/scenes/<thesis>/docs.py``, found through
   the registry): ``differential``, the CSSP's fixed sample of the port against legacy.
 
@@ -116,6 +118,9 @@ def block(name: str) -> str:
         return results(name.removeprefix("results "), engines=("printed", "legacy", "port_printed", "port_corrected"))
     if name == "explain":
         return explain()
+    if name == "toolchains":
+        from .toolchains import summary
+        return summary()
     theirs = thesis_blocks()
     if name in theirs:
         return theirs[name]()

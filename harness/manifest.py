@@ -38,8 +38,9 @@ with what a run ran, from ``version`` to ``inputs_sha256``):
   compiled with, as the build recorded them
 - ``flags_readings``: the flags of a run's rebuilds of a printed listing with the scan's reading
   put back (``readings.FLAGS``, with the ``gfortran`` below)
-- ``gfortran``: the first line of ``gfortran --version`` on PATH at run time (it does the run's
-  own builds: the readings, ``linkrepro arithmetic``), or "not found"
+- ``gfortran``: the first line of ``--version`` of the run-time Fortran compiler (``readings.COMPILER``:
+  ``$LINKREPRO_FC``, else ``gfortran`` on PATH; it does the run's own builds: the readings,
+  ``linkrepro arithmetic``), or "not found"
 - ``platform``, ``machine``: ``platform.platform()``, ``platform.machine()``
 - ``cpu_model``: /proc/cpuinfo's first "model name" (else ``platform.processor()``)
 - ``cpu_count``: ``os.cpu_count()``

@@ -13,13 +13,15 @@ readings edit), ``tables_of(file)`` (the published tables a file's readings are 
 the listings are not at hand) and ``as_markdown(frame)``.  Here: the register's readings,
 putting a reading back, finding gfortran, and the driver-independent parts of the report.
 
-Needs gfortran on PATH: without it ``measure`` raises ``CompilerError``; ``linkrepro
+Needs the run-time compiler on PATH (``COMPILER``: ``$LINKREPRO_FC``, else gfortran; its family's
+flags, ``FLAGS``, as meson.build gives the legacy build): without it ``measure`` raises ``CompilerError``; ``linkrepro
 reproduce`` checks for it before the run starts (``require_compiler``) and skips the
 measurement only when asked to (``--skip-readings``).  Without the source tree's listings it
 is skipped, and the report says so.
 """
 from __future__ import annotations
 
+import os
 import shutil
 from pathlib import Path
 from typing import Any
@@ -30,8 +32,27 @@ from .register import REGISTER_PATH, raw_entries
 
 PRINTED_DIR = Path(__file__).resolve().parent.parent / "legacy" / "printed"
 SRC_DIR = PRINTED_DIR.parent / "src"
-FLAGS = ["-std=legacy", "-fno-automatic", "-ffp-contract=off", "-fno-fast-math", "-O1"]
-COMPILER = "gfortran"
+#: the Fortran compiler that builds the listings at run time: ``$LINKREPRO_FC`` (a name on PATH or
+#: a path: ``gfortran-11``, ``flang-22``), else ``gfortran``; ``make toolchains`` sets it to the
+#: compiler that built the package, so a run's engines and its rebuilt listings share a toolchain
+FC_ENV = "LINKREPRO_FC"
+COMPILER = os.environ.get(FC_ENV, "").strip() or "gfortran"
+#: meson.build's fortran_legacy_args per compiler family (tests hold them equal): LLVM flang spells
+#: gfortran's static storage -fno-automatic -fsave-main-program and has no -std=legacy (it takes the
+#: extensions by default) and no -fallow-argument-mismatch (it warns): meson.build says why
+LEGACY_FLAGS = {"gfortran": ("-std=legacy", "-fno-automatic", "-ffp-contract=off", "-fno-fast-math",
+                             "-fallow-argument-mismatch", "-O1"),
+                "flang": ("-fno-automatic", "-fsave-main-program", "-ffp-contract=off", "-fno-fast-math", "-O1")}
+
+
+def family(compiler: str) -> str:
+    """``compiler``'s family by its name: "flang" (LLVM flang) where the name says flang, else "gfortran"."""
+    return "flang" if "flang" in Path(compiler).name else "gfortran"
+
+
+#: the flags a listing with a reading put back is built with: the legacy build's, but the
+#: argument-mismatch allowance no printed listing needs
+FLAGS = [flag for flag in LEGACY_FLAGS[family(COMPILER)] if flag != "-fallow-argument-mismatch"]
 COMPILE_TIMEOUT_S = 120
 
 

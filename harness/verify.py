@@ -17,9 +17,13 @@ engine's, at its printed digits; summaries rounded):
   not-produced) differs from the reference's.
 
 Policy: on the same toolchain (both have a manifest, and every field of their set-ups,
-``manifest.ENVIRONMENT``, is equal but the commit) every cell must be identical; across
-toolchains, or where a manifest is missing, a number may move by ``units`` (default 4) units in
-the last place.  A status never changes.
+``manifest.ENVIRONMENT``, is equal but the commit) every cell must be identical; where the
+set-ups differ in the Fortran compiler and its build alone (``TOOLCHAIN_FIELDS``) and the
+reference's measured matrix (``toolchains/matrix.csv``, ``make toolchains``) holds the run's
+compiler, each engine's numbers may move as far as they moved there (per engine, the most any
+cell moved: 0 where none moved, so every cell identical); across other toolchains, or where a
+manifest is missing, a number may move by ``units`` (default 4, not measured) units in the last
+place.  A status never changes.
 Columns of measured times (a name with "seconds" or "time") are not compared.  The exit status
 of the command: 0 when every cell keeps the policy, 1 when one does not or the folder cannot be
 trusted, 2 for a usage error (no reference, a damaged one, a manifest of another format or
@@ -58,12 +62,21 @@ SUFFIX = ".csv.xz"
 #: the set-up's fields that name the commit: a new commit on the same toolchain changes them
 COMMIT = ("commit", "dirty", "commit_from")
 STATUS_FILE, STATUS_COLUMN = "diff.csv", "status"
+ENGINES = ("legacy", "printed", "port_printed", "port_corrected", "port")
 EXAMPLES = 5
 #: a column whose numbers carry this many significant digits is written in full (each float's
 #: shortest repr): a difference in it is counted in units in the last place of a double (ulps)
 FULL_DIGITS = 16
-#: the default of ``units`` across toolchains
+#: the default of ``units`` across toolchains the matrix has not measured
 UNITS = 4.0
+#: the measured matrix of the run across toolchains (``make toolchains``, harness/toolchains.py),
+#: kept with the reference it was measured against
+MATRIX = Path("toolchains") / "matrix.csv"
+#: the set-up's fields a change of Fortran compiler changes (and the build tools it was built with):
+#: where the manifests differ in these alone and the run's compiler is one the matrix measured, the
+#: bound is the matrix's
+TOOLCHAIN_FIELDS = ("build_gfortran", "flags_f2py_extension", "flags_printed_programs", "flags_readings",
+                    "gfortran", "meson_python", "build_meson", "build_meson_python")
 
 
 class VerifyError(ValueError):
@@ -92,6 +105,7 @@ class Verdict:
     manifest_differences: dict[str, tuple]
     files: list[FileResult]
     notes: list[str] = field(default_factory=list)       # runs killed or running in the folder
+    measured: dict[str, float] | None = None             # engine: its bound, where the matrix measured the run's compiler
 
     @property
     def failed(self) -> list[FileResult]:
@@ -124,6 +138,43 @@ def _numbers(column: pd.Series) -> np.ndarray | None:
         return None
 
 
+def column_units(ref: pd.Series, run: pd.Series) -> np.ndarray:
+    """Per cell of a column (text cells), how far the run's number is from the reference's, in
+    units in the last place (ulps of a double where the reference writes the column in full, else
+    units of its last written digit); inf where either is not a finite number.  (Identical text
+    may still show 0 or a NaN: compare the text first.)"""
+    a = ref.to_numpy(str)
+    x, y = _numbers(ref), _numbers(run)
+    if x is None or y is None:
+        return np.full(len(a), np.inf)
+    digits = max(printed_digits(t) for t in a if t != "") if (a != "").any() else 1
+    scale = np.fmax(np.abs(x), np.abs(y))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        unit = (np.spacing(scale) if digits >= FULL_DIGITS        # written in full: ulps
+                else 10.0 ** (np.floor(np.log10(scale)) - digits + 1))
+        return np.where(np.isfinite(x) & np.isfinite(y), np.abs(x - y) / unit, np.inf)
+
+
+def engine_of(path: str) -> str:
+    """The engine a scene's CSV is written by (``legacy.csv``: legacy), ``diff`` or ``summary``."""
+    stem = Path(path).stem
+    return stem if stem in ENGINES else ("diff" if stem == Path(STATUS_FILE).stem else "summary")
+
+
+def measured_bounds(reference_dir: Path, compiler: str | None) -> dict[str, float] | None:
+    """Per engine, the most units in the last place any cell moved under ``compiler`` (a build's
+    ``build_gfortran``) in the reference's matrix (``MATRIX``); None where the matrix did not
+    measure that compiler (or there is no matrix)."""
+    path = Path(reference_dir) / MATRIX
+    if compiler is None or not path.is_file():
+        return None
+    matrix = pd.read_csv(path, dtype={"compiler": str}, keep_default_na=False)
+    rows = matrix[matrix["compiler"] == compiler]
+    if rows.empty:
+        return None
+    return {engine: float(part["max_units"].astype(float).max()) for engine, part in rows.groupby("engine")}
+
+
 def compare_frames(name: str, ref: pd.DataFrame, run: pd.DataFrame, allowed: float) -> FileResult:
     """Cell by cell (see the module's docstring); ``allowed``: units of the last digit a number may move."""
     result = FileResult(name)
@@ -142,15 +193,7 @@ def compare_frames(name: str, ref: pd.DataFrame, run: pd.DataFrame, allowed: flo
             result.status_changed += int((~same).sum())
             result.examples += [(int(i), column, str(a[i]), str(b[i]), math.nan) for i in np.flatnonzero(~same)[:EXAMPLES]]
             continue
-        x, y = _numbers(ref[column]), _numbers(run[column])
-        units = np.full(len(a), np.inf)
-        if x is not None and y is not None:
-            digits = max(printed_digits(t) for t in a if t != "") if (a != "").any() else 1
-            scale = np.fmax(np.abs(x), np.abs(y))
-            with np.errstate(divide="ignore", invalid="ignore"):
-                unit = (np.spacing(scale) if digits >= FULL_DIGITS        # written in full: ulps
-                        else 10.0 ** (np.floor(np.log10(scale)) - digits + 1))
-                units = np.where(np.isfinite(x) & np.isfinite(y), np.abs(x - y) / unit, np.inf)
+        units = column_units(ref[column], run[column])
         for i in np.flatnonzero(~same):
             if units[i] <= allowed * (1 + 1e-6):      # (a difference of decimals, computed in binary)
                 result.within += 1
@@ -196,9 +239,11 @@ def _a_folder(out_dir: Path) -> None:
         raise VerifyError(f"{out_dir} is a file, not a run's folder")
 
 
-def verify(out_dir: Path, reference_dir: Path = REFERENCE_DIR, units: float = UNITS,
+def verify(out_dir: Path, reference_dir: Path = REFERENCE_DIR, units: float | None = None,
            scenes: list[str] | None = None) -> Verdict:
-    """Compare the scenes of ``out_dir`` (``scenes``: those only) with ``reference_dir``."""
+    """Compare the scenes of ``out_dir`` (``scenes``: those only) with ``reference_dir``.  Across
+    toolchains: ``units`` where given; else, where the manifests differ in ``TOOLCHAIN_FIELDS``
+    alone and the matrix measured the run's compiler, each engine's measured bound; else ``UNITS``."""
     out_dir, reference_dir = Path(out_dir), Path(reference_dir)
     if not reference_dir.is_dir() or not reference_scenes(reference_dir):
         raise VerifyError(f"no reference at {reference_dir} (a folder of <scene>/<file>{SUFFIX}); "
@@ -218,6 +263,10 @@ def verify(out_dir: Path, reference_dir: Path = REFERENCE_DIR, units: float = UN
     manifests = load_manifest(reference_dir, "reference"), load_manifest(out_dir, "run")
     differences = manifest_differences(*manifests)
     same = not differences and None not in manifests
+    measured = (measured_bounds(reference_dir, manifests[1].get("build_gfortran"))
+                if units is None and not same and None not in manifests and set(differences) <= set(TOOLCHAIN_FIELDS)
+                else None)
+    units = UNITS if units is None else units
     files = []
     for scene in found:
         if scene not in known:
@@ -243,7 +292,8 @@ def verify(out_dir: Path, reference_dir: Path = REFERENCE_DIR, units: float = UN
                 continue
             run = _read_run_csv(path)
             files.append(FileResult(name, problem=run) if isinstance(run, str) else
-                         compare_frames(name, ref, run, 0.0 if same else units))
+                         compare_frames(name, ref, run, 0.0 if same else
+                                        units if measured is None else measured.get(engine_of(name), 0.0)))
         for path in sorted((out_dir / scene).glob("*.csv")):
             if not (reference_dir / scene / (path.stem + SUFFIX)).exists():
                 files.append(FileResult(f"{scene}/{path.name}", problem="not in the reference"))
@@ -254,7 +304,7 @@ def verify(out_dir: Path, reference_dir: Path = REFERENCE_DIR, units: float = UN
               "as the runs before it left them (its partial files are hidden in the folder; the next run removes them)"]
              if killed else [])
     notes += [f"a run is writing {', '.join(running)} into this folder now: verify again when it ends"] if running else []
-    return Verdict(out_dir, reference_dir, units, same, differences, files, notes)
+    return Verdict(out_dir, reference_dir, units, same, differences, files, notes, measured)
 
 
 def describe(verdict: Verdict) -> str:
@@ -263,6 +313,10 @@ def describe(verdict: Verdict) -> str:
     lines = [f"linkrepro verify: {verdict.out_dir} against the reference {verdict.reference_dir}",
              "policy: " + ("the same toolchain (the manifests agree): every cell identical as written"
                            if verdict.same_toolchain else
+                           "another Fortran compiler, measured (the reference's toolchains/matrix.csv, `make "
+                           "toolchains`): each engine's cells may move as far as they moved there, "
+                           + ", ".join(f"{e} {u:g}" for e, u in sorted(verdict.measured.items()))
+                           + " unit(s) in the last place" if verdict.measured is not None else
                            f"toolchains that differ or cannot be compared: a number may move by {verdict.units:g} "
                            "unit(s) in the last place (ulps where written in full, else of the last written digit)")
              + "; a diff.csv status never changes; measured times are not compared",
@@ -314,6 +368,8 @@ def refresh(out_dir: Path, reference_dir: Path = REFERENCE_DIR) -> int:
                 (fresh / scene / (path.stem + SUFFIX)).write_bytes(lzma.compress(path.read_bytes(), preset=9))
         if (out_dir / MANIFEST).exists():
             shutil.copyfile(out_dir / MANIFEST, fresh / MANIFEST)
+        if (reference_dir / MATRIX).is_file():     # measured against the reference: `make toolchains` again
+            shutil.copytree(reference_dir / MATRIX.parent, fresh / MATRIX.parent)
         old = reference_dir.with_name(reference_dir.name + ".old")
         if reference_dir.exists():
             os.replace(reference_dir, old)

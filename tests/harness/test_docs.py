@@ -51,7 +51,7 @@ def test_every_generated_block_is_what_a_run_gives_now():
 
 def test_the_generated_blocks_are_there():
     names = {m.group("name") for p in PAGES for m in docs.BLOCK.finditer(p.read_text())}
-    assert {"results summary", "results ali1977", "results rahman1996", "explain", "differential"} <= names
+    assert {"results summary", "results ali1977", "results rahman1996", "explain", "differential", "toolchains"} <= names
 
 
 EXAMPLES = [(p.relative_to(ROOT).as_posix(), k, code) for p in PAGES for k, code in enumerate(PYTHON.findall(p.read_text()))]

@@ -55,16 +55,21 @@ def test_hashes_are_those_of_the_files(folder):
     assert data["inputs_sha256"] == hashlib.sha256(lines.encode()).hexdigest()
 
 
-def _meson_legacy_args() -> list[str]:
+def meson_legacy_args() -> dict[str, list[str]]:
+    """meson.build's fortran_legacy_args per compiler family, as its branches on the compiler's id
+    declare them: {"gfortran": ..., "flang": ...}."""
     text = (ROOT / "meson.build").read_text()
-    block = re.search(r"^fortran_legacy_args\s*=\s*\[(.*?)\]", text, re.S | re.M).group(1)
-    return re.findall(r"'([^']*)'", block)
+    blocks = re.findall(r"^(?:if|elif) fc\.get_id\(\) (==|in) ([^\n]*)\n\s*fortran_legacy_args\s*=\s*\[(.*?)\]",
+                        text, re.S | re.M)
+    ids = {"'gcc'": "gfortran", "['flang', 'llvm-flang']": "flang"}
+    return {ids[which]: re.findall(r"'([^']*)'", block) for _, which, block in blocks}
 
 
 def test_the_flags_are_those_meson_build_declares():
     text = (ROOT / "meson.build").read_text()
-    declared = _meson_legacy_args()
-    assert "-std=legacy" in declared and "-fno-automatic" in declared
+    family = "flang" if "flang" in _build_record.GFORTRAN.lower() else "gfortran"
+    declared = meson_legacy_args()[family]
+    assert "-fno-automatic" in declared and "-ffp-contract=off" in declared
     # both legacy builds (the f2py extensions, the printed programs) compile with that variable
     assert re.findall(r"fortran_args:\s*(\w+)", text) == ["fortran_legacy_args", "fortran_legacy_args"]
     fields = manifest.environment({})

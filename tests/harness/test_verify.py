@@ -94,6 +94,29 @@ def test_a_number_one_ulp_off_moves_on_the_same_toolchain_and_not_across(recorde
     assert _cli("verify", "--out", str(run), "--reference", str(ref), "--units", "0.5")[0] == 1
 
 
+def test_a_compiler_the_matrix_measured_is_held_to_what_it_moved(recorded, run):
+    """The reference's toolchains/matrix.csv bounds a run whose set-up differs in its Fortran compiler
+    alone, per engine, where it measured that compiler; another compiler, or another change too, 4 ulps."""
+    ref = Path(shutil.copytree(recorded[1], run.parent / "ref"))
+    _edit(run / "ali1977-table1" / "legacy.csv", 4, "src_dx", lambda t: repr(float(np.nextafter(float(t), np.inf))))
+    (ref / "toolchains").mkdir()
+    pd.DataFrame({"compiler": ["GNU Fortran 11", "GNU Fortran 11", "flang 22"], "engine": ["legacy", "printed", "legacy"],
+                  "max_units": [0.0, 3.0, 2.0]}).to_csv(ref / verify_mod.MATRIX, index=False)
+    _manifest(ref, build_gfortran="GNU Fortran 12", numpy="2.0")
+
+    def verdict(**fields):
+        _manifest(run, **{"numpy": "2.0", **fields})
+        return _cli("verify", "--out", str(run), "--reference", str(ref))
+    status, text, _ = verdict(build_gfortran="GNU Fortran 11")               # measured: no legacy cell moved
+    assert status == 1 and "ali1977-table1/legacy.csv: 1 moved" in text and "legacy 0, printed 3" in text
+    assert verdict(build_gfortran="flang 22")[0] == 0                          # measured: 2 ulps
+    status, text, _ = verdict(build_gfortran="GNU Fortran 13")                 # not measured: 4 ulps
+    assert status == 0 and "1 within the policy" in text
+    assert verdict(build_gfortran="GNU Fortran 11", numpy="2.1")[0] == 0       # more than the compiler changed
+    assert _cli("verify", "--out", str(run), "--reference", str(ref), "--units", "4")[0] == 0      # as asked
+    assert (run.parent / "ref" / verify_mod.MATRIX).is_file()
+
+
 def test_a_rounded_column_counts_units_of_its_last_written_digit():
     ref = pd.DataFrame({"x": ["1.23456789", "2.5", "-0.000123456789"]})
     run = pd.DataFrame({"x": ["1.23456791", "2.50000001", "-0.000123456786"]})

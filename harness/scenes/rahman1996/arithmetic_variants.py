@@ -10,11 +10,12 @@ from typing import Callable
 import numpy as np
 
 from ....legacy import fixed_form
+from ...readings import COMPILER, LEGACY_FLAGS, family
 
 MAIN = "rahman1996_cssp_main.f"
-#: meson.build's fortran_legacy_args: the build of the legacy engine (a test holds them equal)
-REFERENCE_FLAGS = ("-std=legacy", "-fno-automatic", "-ffp-contract=off", "-fno-fast-math",
-                   "-fallow-argument-mismatch", "-O1")
+#: meson.build's fortran_legacy_args for the run-time compiler (``readings.COMPILER``): the build of
+#: the legacy engine (a test holds them equal); the variants' extra flags are gfortran's
+REFERENCE_FLAGS = LEGACY_FLAGS[family(COMPILER)]
 
 # ---------------------------------------------------------------- source transforms
 # Fixed form: columns 1-6 label and continuation, 7-72 code; a C, c, * or ! in column 1
