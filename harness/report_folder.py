@@ -5,7 +5,8 @@ bench and each thesis's own commands leave their markdown in their folder (``ben
 ``arithmetic/arithmetic.md``).  ``collect`` gathers what the folder holds, in the order of the
 theses (each thesis's scenes as it lists them, then its commands' outputs; the bench last), and
 names what is not there with the command that writes it (``linkrepro differential`` writes
-``differential/differential.md``, shown before the bench).  ``write`` writes both reports from
+``differential/differential.md``, and ``python -m linkrepro.harness.toolchains`` writes
+``toolchains/matrix.md``, both shown before the bench).  ``write`` writes both reports from
 that, each whole or not at all (a temporary file renamed), under the folder's lock
 (``run_folder.locked``), so a run of one scene updates its section and keeps the others, and a
 report that cannot be built leaves the last one in place.  A scene's folder that is not what its
@@ -16,6 +17,7 @@ manifest.json (``manifest.summary``).
 """
 from __future__ import annotations
 
+import shlex
 import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -86,6 +88,13 @@ def _bench(out_dir: Path) -> OutputSection:
                          manifest.command_line(["bench", "--out", str(folder)]))
 
 
+def _toolchains(out_dir: Path) -> OutputSection:
+    folder = out_dir / "toolchains"
+    return OutputSection("toolchains", "The run of record across Fortran compilers (make toolchains)", folder,
+                         folder / "matrix.md",
+                         shlex.join(["python", "-m", "linkrepro.harness.toolchains", "--out", str(folder)]))
+
+
 def _differential(out_dir: Path) -> OutputSection:
     folder = out_dir / "differential"
     return OutputSection("differential", "Legacy against the port on sampled geometries (linkrepro differential)",
@@ -145,7 +154,7 @@ def collect(out_dir: Path) -> Folder:
             section = _scene_section(out_dir, scene.name)
             (sections if section.outcome is not None or section.problem else absent).append(section)
         sections += [_command(out_dir, command) for command in commands_of(thesis) if command.report_markdown]
-    return Folder(out_dir, sections + [_differential(out_dir), _bench(out_dir)], absent, _notes(out_dir))
+    return Folder(out_dir, sections + [_differential(out_dir), _toolchains(out_dir), _bench(out_dir)], absent, _notes(out_dir))
 
 
 def _scene_lines(section: SceneSection, register: dict) -> list[str]:

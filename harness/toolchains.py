@@ -131,7 +131,11 @@ def as_markdown(matrix: pd.DataFrame) -> str:
     counts = ["cells", "identical", *[f"within_{k}" for k in BINS], "beyond", "not_a_number", "status_changed"]
     head = ["toolchain", "engine", "cells", "identical", *[f"<= {k}" for k in BINS], "beyond", "NaN/text",
             "status", "largest (units), where"]
-    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    lines = ["Every cell of the run of record (`reference/`) as each Fortran compiler's build of the package "
+             "gives it, per engine's CSVs: identical as written, within k units in the last place (ulps where "
+             "written in full, else units of the last written digit), beyond, not a number or text changed, and "
+             "diff.csv statuses changed; the arithmetic study (not in reference/) against gfortran-12's run.", "",
+             "| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     for (name, engine), part in matrix.groupby(["toolchain", "engine"], sort=False):
         top = part.loc[part["max_units"].astype(float).idxmax()]
         where = (f"{float(top['max_units']):.3g}: {top['scene']}/{top['file']} row {top['max_row']} "
@@ -223,6 +227,10 @@ def main(argv: list[str] | None = None) -> int:
     matrix.to_csv(args.out / "matrix.csv", index=False)
     (args.out / "matrix.md").write_text(as_markdown(matrix))
     print(as_markdown(matrix))
+    if args.out.name == "toolchains" and (args.out.parent / "report.md").is_file():
+        from .report_folder import write             # a report folder's toolchains/: its report shows the matrix
+        write(args.out.parent)
+        print(f"report: {args.out.parent / 'report.html'}")
     if args.commit:
         committed = args.source / "reference" / MATRIX.parent
         committed.mkdir(parents=True, exist_ok=True)

@@ -88,3 +88,22 @@ def test_the_run_time_compiler_and_its_flags_follow_linkrepro_fc():
                              capture_output=True, text=True, check=True).stdout.split()
         flags = [f for f in readings.LEGACY_FLAGS[family] if f != "-fallow-argument-mismatch"]
         assert out == [fc or "gfortran", *flags]
+
+
+def test_the_committed_markdown_is_the_committed_matrix():
+    """matrix.md is as_markdown of matrix.csv (both written by one measurement)."""
+    matrix = pd.read_csv(COMMITTED, dtype={"max_row": str, "max_reference": str, "max_run": str})
+    assert (toolchains.COMMITTED / "matrix.md").read_text() == toolchains.as_markdown(matrix)
+
+
+def test_a_report_folder_shows_its_matrix(tmp_path):
+    """A report folder's toolchains/matrix.md is a section of its report (absent: the command that writes it)."""
+    from linkrepro.harness import report_folder
+    section = lambda: {s.name: s for s in report_folder.collect(tmp_path).sections}["toolchains"]   # noqa: E731
+    assert not section().present and "linkrepro.harness.toolchains" in section().command
+    (tmp_path / "toolchains").mkdir()
+    (tmp_path / "toolchains" / "matrix.md").write_text((toolchains.COMMITTED / "matrix.md").read_text())
+    assert section().present
+    report_folder.write(tmp_path)
+    page = (tmp_path / "report.html").read_text()
+    assert "The run of record across Fortran compilers" in page and "<td>flang-22</td>" in page
