@@ -17,7 +17,9 @@ bytes do not match its digest (cut short, damaged) is built again and replaced. 
 executable is copied out of the entry and run from the caller's folder, against the C and
 FORTRAN libraries of this machine (``run``: a thread's fork may hold a file just written open
 until the child execs, and running it then fails with ETXTBSY; it is tried again).  A folder
-that cannot be read or written is no cache: the build runs as without one.  Removing the folder empties the cache.
+that cannot be read or written is no cache: the build runs as without one.  Removing the folder
+empties the cache; beyond ``MAX_BYTES`` the least recently used entries are removed (``prune``:
+a stored or fetched entry is used).
 ``fetch`` and ``store`` keep other derived bytes the same way (the report page's WebP figures,
 ``html_report.data_uri``), each named by the SHA-256 of what makes it.
 """
@@ -38,6 +40,9 @@ from typing import Callable, Sequence
 ENV = "LINKREPRO_BUILD_CACHE"
 DIGEST_LEN = 64          # hex digits of a SHA-256
 BUSY_TRIES, BUSY_WAIT_S = 20, 0.05
+#: the cache's size at most (bytes): the least recently used entries go beyond it (``prune``); a
+#: full run's builds and figures (reproduce and arithmetic) take 3.5 MB in 70 entries, measured 2026-11-28
+MAX_BYTES = 256 * 2**20
 
 
 def folder() -> Path | None:
@@ -127,6 +132,10 @@ def fetch(entry: str) -> bytes | None:
     digest, payload = data[:DIGEST_LEN], data[DIGEST_LEN + 1:]
     if data[DIGEST_LEN:DIGEST_LEN + 1] != b"\n" or hashlib.sha256(payload).hexdigest().encode() != digest:
         return None
+    try:
+        os.utime(where / entry)                        # used now: what ``prune`` keeps longest
+    except OSError:
+        pass
     return payload
 
 
@@ -146,8 +155,36 @@ def store(entry: str, payload: bytes) -> None:
         except BaseException:
             Path(temporary).unlink(missing_ok=True)
             raise
+        prune(target)
     except OSError:
         pass                                           # no cache to write: the caller has its bytes
+
+
+def prune(target: Path, limit: int = MAX_BYTES) -> list[str]:
+    """Remove ``target``'s least recently used entries (stored or fetched longest ago) until the
+    rest take at most ``limit`` bytes; return the names removed.  Every changed listing, flag or
+    figure is a new entry (a figure of measured times is new at every run), so without this the
+    cache would only grow.  Another process may be removing the same entries: a missing one is no
+    error."""
+    entries = []
+    for item in os.scandir(target):
+        if len(item.name) == DIGEST_LEN and not item.name.startswith("."):
+            try:
+                stat = item.stat()
+            except OSError:
+                continue
+            entries.append((stat.st_mtime, stat.st_size, item.name))
+    total, removed = sum(size for _, size, _ in entries), []
+    for _, size, name in sorted(entries):
+        if total <= limit:
+            break
+        try:
+            (target / name).unlink()
+        except FileNotFoundError:
+            pass
+        total -= size
+        removed.append(name)
+    return removed
 
 
 def run(command: Sequence[str], **kwargs) -> subprocess.CompletedProcess:

@@ -183,3 +183,17 @@ def test_the_pages_webp_figures_are_cached_pixel_for_pixel(cache, monkeypatch):
         assert html_report.webp(png) == first
     entry.write_bytes(entry.read_bytes()[:-10])                           # cut short: encoded again, stored whole
     assert html_report.webp(png) == first and build_cache.fetch(entry.name) == first
+
+
+def test_the_least_recently_used_entries_go_beyond_the_limit(cache):
+    """An entry stored or fetched is used; beyond the limit the ones used longest ago are removed."""
+    import hashlib
+    import os
+    names = [hashlib.sha256(bytes([k])).hexdigest() for k in range(5)]
+    for age, name in enumerate(names):
+        build_cache.store(name, bytes(100))
+        os.utime(cache / name, (1e9 + age, 1e9 + age))                  # stored in this order
+    assert build_cache.fetch(names[0]) == bytes(100)                    # the oldest used again: kept
+    entry_bytes = (cache / names[0]).stat().st_size
+    removed = build_cache.prune(cache, limit=3 * entry_bytes)
+    assert removed == names[1:3] and sorted(p.name for p in cache.iterdir()) == sorted([names[0], *names[3:]])
