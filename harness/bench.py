@@ -245,7 +245,7 @@ def knob_tables(rows: pd.DataFrame, descriptions: dict[str, str]) -> list[str]:
     lines = []
     for name, g in rows.groupby("subject", sort=False):
         lines += [f"### {prose(name)}", "", f"{prose(descriptions[name])}. Error unit: {prose(str(g.error_unit.iloc[0]))}; "
-                  "\\* on the Pareto front, = the reference.", "", "| setting | seconds | error | |", "|---|---|---|---|"]
+                  f"{FRONT}on the Pareto front, = the reference.", "", "| setting | seconds | error | |", "|---|---|---|---|"]
         for r in g.itertuples():
             error = f"{r.error:.2e}" if np.isfinite(r.error) else prose(str(r.note))
             lines.append(f"| {prose(str(r.setting))} | {r.seconds:.3g} | {error} | {FRONT if r.pareto else ''}"

@@ -15,7 +15,7 @@ Per scene: its overview lines (other than a table's), its own report.md whole (`
 its opening shown, each part folded under its heading, the register entries it names shown once in
 the page's register section, which a cell's trail reads too) and links to its folder's files; per
 command's output: its markdown, its ``###`` subsections folded behind ``<details>`` (``folded``).
-Every string is rendered by one renderer (``markdown_text.html``, CommonMark with tables).  Every
+Every markdown string is rendered by one renderer (``markdown_text.html``, CommonMark with tables).  Every
 section's figures with their captions (``figures.caption_of``), inline as lossless WebP
 (``data_uri``), and an overview of every table and engine (``diff.count_cells``, the counts every
 report shows) that links each section and the folder's manifest.json.  A full run's page keeps
@@ -43,7 +43,7 @@ from . import build_cache, figures as figures_mod, listing_lines, manifest, mark
 from .diff import CLASSES, COUNT_COLUMNS, EXPLAINED_BY, classify_cells, headline
 from .engines import ENGINES
 from .register import Deviation
-from .report import heading
+from .report import REGISTER_PART, heading
 from .scenes import SCENES, TABLES
 from .trail import digits_reproduced, printed_digits, published_source, read_diff
 
@@ -69,12 +69,11 @@ CELL_STATUSES = tuple(SHOWN.get(c, c) for c in CLASSES)
 
 
 def data_uri(path: Path) -> str:
-    """A PNG or SVG file as a ``data:`` URI, for an ``<img>`` that needs no other file: a PNG as
-    lossless WebP (``webp``), or as itself where Pillow has no WebP."""
-    if path.suffix == ".png" and features.check("webp"):
+    """A PNG file as a ``data:`` URI, for an ``<img>`` that needs no other file: as lossless WebP
+    (``webp``), or as itself where Pillow has no WebP."""
+    if features.check("webp"):
         return "data:image/webp;base64," + base64.b64encode(webp(path.read_bytes())).decode("ascii")
-    kind = "image/svg+xml" if path.suffix == ".svg" else "image/png"
-    return f"data:{kind};base64," + base64.b64encode(path.read_bytes()).decode("ascii")
+    return "data:image/png;base64," + base64.b64encode(path.read_bytes()).decode("ascii")
 
 
 def webp(png: bytes) -> bytes:
@@ -170,15 +169,15 @@ def _number(value: float) -> str | None:
 
 def _column_head(scene, column: str) -> dict:
     what = scene.describe(column)
-    return {"id": column, "words": what.words, "unit": what.unit, "label": what.label}
+    return {"id": column, "unit": what.unit, "label": what.label}
 
 
 @dataclass
 class PageData:
     """What the page's script reads (``cells-data``): per scene its published table's cells
-    (``table_view``), and what they repeat kept once, each cell holding its index: the columns'
-    words, the register ids' lists, the trail blocks (listing lines and the scene's notes,
-    shown from the page's templates)."""
+    (``table_view``), and what they repeat kept once, by index: a column's label (its words and
+    unit, per table column), a cell's register ids' list and its trail block (the block's listing
+    lines and the scene's notes are the page's ``<template>`` elements, named by that index)."""
     tables: dict[str, dict] = field(default_factory=dict)
     labels: dict[str, int] = field(default_factory=dict)
     ids: dict[str, int] = field(default_factory=dict)
@@ -219,7 +218,7 @@ def _engines(here: dict[str, dict], printed: int, data: PageData) -> list:
 
 def table_view(scene, diff: pd.DataFrame, register: dict[str, Deviation], data: PageData) -> dict:
     """The published table as printed for the template (rows of texts; columns: their ids,
-    words and unit); its cells go into ``data.tables[scene.name]``: per row, per column, the
+    units and labels, the hover text); its cells go into ``data.tables[scene.name]``: per row, per column, the
     printed text, half a unit of its last digit, its significant digits, its trail block and
     per engine ``_engines``; null where the table prints no cell.  The page's script colours
     the cells, writes their digits markers and hover text from it."""
@@ -282,7 +281,6 @@ OPEN_CHARS = 300
 #: the files of a section's folder the page links, in this order (outcome.json is the run's record)
 LINKED = ("*.md", "*.csv", "*.png", "*.svg")
 #: a report.md's part naming register entries (``report.scene_report``): the page shows each entry once
-REGISTER_PART = "Register entries involved"
 ENTRY_HEAD = re.compile(r"^#### (D\d+) ", re.M)
 
 

@@ -226,6 +226,8 @@ COUNTS_WORDS = ("A cell is *matched* when it is within half a unit of the printe
                 "`registered` covers the explained, within-tolerance and unresolved cells.")
 
 
+#: the heading of a scene report's part that renders the register entries its cells name
+REGISTER_PART = "Register entries involved"
 ASSUMPTIONS_WORDS = ("'Corrected' means the listings' bugs removed within the thesis's model: the corrected engine "
                      "keeps the thesis's modelling choices below (register kind `model-assumption`, not bugs), each "
                      "with the effect an alternative was measured to have.")
@@ -279,5 +281,5 @@ def scene_report(scene, diff: pd.DataFrame, timings: dict[str, float], register:
     if extra:
         out += ["", extra]
     out += ["", "## Plot", ""] + [f"![{p.stem}]({p.name})" for p in plots]
-    out += ["", "## Register entries involved", ""] + [render_entry(register[i]) + "\n" for i in ids if i in register]
+    out += ["", f"## {REGISTER_PART}", ""] + [render_entry(register[i]) + "\n" for i in ids if i in register]
     return "\n".join(out) + "\n"

@@ -26,7 +26,7 @@ import pandas as pd
 
 from . import manifest, register as register_mod, run_folder
 from .diff import headline, total_counts
-from .markdown_text import prose
+from .markdown_text import code_span, prose
 from .report import COUNTS_WORDS
 from .scene import Outcome
 from .scenes import SCENES, THESES, commands_of
@@ -171,7 +171,7 @@ def _scene_lines(section: SceneSection, register: dict) -> list[str]:
 def _output_lines(section: OutputSection, out_dir: Path) -> list[str]:
     if section.present:
         return [f"## [{section.title}]({section.markdown.relative_to(out_dir).as_posix()})", ""]
-    return [f"## {section.title}", "", f"Not in this folder: {manifest.code_span(section.command)} writes it.", ""]
+    return [f"## {section.title}", "", f"Not in this folder: {code_span(section.command)} writes it.", ""]
 
 
 def markdown(folder: Folder, latest: str = "") -> str:
@@ -193,7 +193,7 @@ def markdown(folder: Folder, latest: str = "") -> str:
         lines += ["## Failures", "", *[f"- **{failure}**" for failure in failures], ""]
     if folder.absent:
         lines += ["## Not run into this folder", "",
-                  f"{manifest.code_span(folder.absent_command)} runs one: "
+                  f"{code_span(folder.absent_command)} runs one: "
                   + ", ".join(s.name for s in folder.absent) + ".", ""]
     lines += [f"## {manifest.TITLE}", "", *manifest.summary(folder.out_dir)]
     return "\n".join(lines) + "\n"

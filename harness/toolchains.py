@@ -231,6 +231,10 @@ def main(argv: list[str] | None = None) -> int:
         from .report_folder import write             # a report folder's toolchains/: its report shows the matrix
         write(args.out.parent)
         print(f"report: {args.out.parent / 'report.html'}")
+    unbuilt = sorted(set(matrix.loc[~matrix["built"].str.startswith("built with"), "toolchain"]))
+    if args.commit and unbuilt:                        # verify would lose those compilers' measured bounds
+        print(f"not committed: {', '.join(unbuilt)} did not build (matrix.md says why)", file=sys.stderr)
+        return 1
     if args.commit:
         committed = args.source / "reference" / MATRIX.parent
         committed.mkdir(parents=True, exist_ok=True)

@@ -164,7 +164,8 @@ def engine_of(path: str) -> str:
 def measured_bounds(reference_dir: Path, compiler: str | None) -> dict[str, float] | None:
     """Per engine, the most units in the last place any cell moved under ``compiler`` (a build's
     ``build_gfortran``) in the reference's matrix (``MATRIX``); None where the matrix did not
-    measure that compiler (or there is no matrix)."""
+    measure that compiler (or there is no matrix).  An engine a cell of which turned not a number
+    or other text there (no finite bound) is held to the unmeasured ``UNITS``, never to no bound."""
     path = Path(reference_dir) / MATRIX
     if compiler is None or not path.is_file():
         return None
@@ -172,7 +173,8 @@ def measured_bounds(reference_dir: Path, compiler: str | None) -> dict[str, floa
     rows = matrix[matrix["compiler"] == compiler]
     if rows.empty:
         return None
-    return {engine: float(part["max_units"].astype(float).max()) for engine, part in rows.groupby("engine")}
+    moved = {engine: float(part["max_units"].astype(float).max()) for engine, part in rows.groupby("engine")}
+    return {engine: units if math.isfinite(units) else UNITS for engine, units in moved.items()}
 
 
 def compare_frames(name: str, ref: pd.DataFrame, run: pd.DataFrame, allowed: float) -> FileResult:

@@ -79,9 +79,15 @@ def prune(root: Path, keep: int = KEEP, idle_s: float = IDLE_S) -> list[Path]:
     ``idle_s`` seconds; return those removed (another process may be removing them too)."""
     try:
         folders = [p for p in root.iterdir() if _OURS_NAME.fullmatch(p.name)]
-        used = sorted(((p.stat().st_mtime, p) for p in folders), reverse=True)
     except OSError:
         return []
+    used = []
+    for path in folders:
+        try:
+            used.append((path.stat().st_mtime, path))
+        except OSError:                               # removed meanwhile by another process
+            continue
+    used.sort(reverse=True)
     removed = [p for mtime, p in used[keep:] if time.time() - mtime > idle_s]
     for path in removed:
         shutil.rmtree(path, ignore_errors=True)

@@ -46,6 +46,8 @@ def run(code: str, cwd: Path | str, preload: frozenset[str] = frozenset()) -> su
     conn = _server(frozenset(preload))
     conn.send((code, str(cwd)))
     if not conn.poll(CHILD_SECONDS):
+        conn.close()                    # its late answer must not be read as the next code's:
+        _server.cache_clear()           # the next run starts a server of its own (this one sees EOF)
         raise TimeoutError(f"no answer in {CHILD_SECONDS} s from: {code[:200]}")
     status, out, err = conn.recv()
     return subprocess.CompletedProcess(["python", "-c", code], status, out, err)

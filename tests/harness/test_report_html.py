@@ -385,7 +385,7 @@ def report_fragments(markdown: str) -> tuple[list[str], list[str]]:
             part = line[3:]
         if not line.strip() or line.startswith(("![", "|---")):
             continue
-        field = part == "Register entries involved" and line.startswith("- ")     # an entry's field: name, words
+        field = part == report.REGISTER_PART and line.startswith("- ")     # an entry's field: name, words
         line = re.sub(r"^(#+ |- |\d+\. )", "", line)
         cells = ([c for c in re.split(r"(?<!\\)\|", line) if c.strip()] if line.startswith("|")
                  else line.split(": ", 1) if field else [line])
@@ -394,7 +394,7 @@ def report_fragments(markdown: str) -> tuple[list[str], list[str]]:
             words = "".join(p if i % 3 == 2 else "" if i % 3 == 1 else
                             re.sub(r"\\(.)", r"\1", re.sub(EMPHASIS, r"\1\2", p))
                             for i, p in enumerate(pieces))
-            in_entries = part == "Register entries involved" and not line.startswith("Register")
+            in_entries = part == report.REGISTER_PART and not line.startswith("Register")
             (entries if in_entries else shown).append(squash(words))
     return shown[:-1] if shown and shown[-1] == squash(part) else shown, entries
 

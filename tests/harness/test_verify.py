@@ -5,6 +5,7 @@ import contextlib
 import io
 import json
 import lzma
+import math
 import re
 import shutil
 from pathlib import Path
@@ -115,6 +116,15 @@ def test_a_compiler_the_matrix_measured_is_held_to_what_it_moved(recorded, run):
     assert verdict(build_gfortran="GNU Fortran 11", numpy="2.1")[0] == 0       # more than the compiler changed
     assert _cli("verify", "--out", str(run), "--reference", str(ref), "--units", "4")[0] == 0      # as asked
     assert (run.parent / "ref" / verify_mod.MATRIX).is_file()
+
+
+def test_a_compiler_under_which_a_cell_turned_text_is_held_to_the_default(tmp_path):
+    """A matrix row with no finite bound (a cell that turned NaN or text: inf units) bounds that
+    engine by the unmeasured 4 ulps, not by infinity (which would let any cell through)."""
+    (tmp_path / "toolchains").mkdir()
+    pd.DataFrame({"compiler": ["flang 22", "flang 22"], "engine": ["legacy", "printed"],
+                  "max_units": [math.inf, 1.0]}).to_csv(tmp_path / verify_mod.MATRIX, index=False)
+    assert verify_mod.measured_bounds(tmp_path, "flang 22") == {"legacy": verify_mod.UNITS, "printed": 1.0}
 
 
 def test_a_rounded_column_counts_units_of_its_last_written_digit():
